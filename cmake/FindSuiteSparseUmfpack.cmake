@@ -1,0 +1,12 @@
+# Finds UMFPACK (SuiteSparse) as packaged by Debian, which ships no CMake config for it.
+find_path(UMFPACK_INCLUDE_DIR umfpack.h PATH_SUFFIXES suitesparse)
+find_library(UMFPACK_LIBRARY umfpack)
+find_library(AMD_LIBRARY amd)
+find_library(SUITESPARSECONFIG_LIBRARY suitesparseconfig)
+include(FindPackageHandleStandardArgs)
+find_package_handle_standard_args(SuiteSparseUmfpack DEFAULT_MSG UMFPACK_INCLUDE_DIR UMFPACK_LIBRARY AMD_LIBRARY SUITESPARSECONFIG_LIBRARY)
+if(SuiteSparseUmfpack_FOUND AND NOT TARGET SuiteSparse::umfpack)
+  add_library(SuiteSparse::umfpack INTERFACE IMPORTED)
+  target_include_directories(SuiteSparse::umfpack INTERFACE ${UMFPACK_INCLUDE_DIR})
+  target_link_libraries(SuiteSparse::umfpack INTERFACE ${UMFPACK_LIBRARY} ${AMD_LIBRARY} ${SUITESPARSECONFIG_LIBRARY})
+endif()

@@ -1,0 +1,73 @@
+#include "strandfem/geometry/strand.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace strandfem {
+
+std::vector<int> default_lay_directions(int layer_count) {
+  std::vector<int> directions(layer_count, 1);
+  for (int i = layer_count - 1, d = 1; i >= 1; --i, d = -d) directions[i] = d;
+  return directions;
+}
+
+double layer_radius(const StrandSpec& strand, int layer) {
+  if (layer == 0) return 0.0;
+  double r = 0.5 * strand.layers[0].wire_diameter;
+  for (int k = 1; k < layer; ++k) r += strand.layers[k].wire_diameter;
+  return r + 0.5 * strand.layers[layer].wire_diameter;
+}
+
+CenterlinePoint wire_centerline(const StrandSpec& strand, int layer, int wire_in_layer, double z) {
+  CenterlinePoint p;
+  if (layer == 0) {
+    p.position = Vec3(0, 0, z);
+    p.frame.col(0) = Vec3::UnitZ();
+    p.frame.col(1) = Vec3::UnitX();
+    p.frame.col(2) = Vec3::UnitY();
+    return p;
+  }
+  const LayerSpec& spec = strand.layers[layer];
+  const double R = layer_radius(strand, layer);
+  const double q = spec.lay_direction;
+  // Angle rate along z: theta_i / L with theta_i = tan(alpha) L / R.
+  const double rate = q * std::tan(spec.lay_angle) / R;
+  const double phi = spec.start_angle + 2.0 * std::numbers::pi * wire_in_layer / spec.wires + rate * z;
+  p.position = Vec3(R * std::cos(phi), R * std::sin(phi), z);
+  const Vec3 tangent = Vec3(-R * rate * std::sin(phi), R * rate * std::cos(phi), 1.0).normalized();
+  const Vec3 inward(-std::cos(phi), -std::sin(phi), 0.0);
+  p.frame.col(0) = tangent;
+  p.frame.col(1) = inward;
+  p.frame.col(2) = tangent.cross(inward);
+  return p;
+}
+
+double lateral_clearance(const StrandSpec& strand, int layer) {
+  const LayerSpec& spec = strand.layers[layer];
+  if (layer == 0 || spec.wires < 2) return std::numeric_limits<double>::quiet_NaN();
+  const double R = layer_radius(strand, layer);
+  const double k = spec.lay_direction * std::tan(spec.lay_angle) / R;
+  const double phi0 = 2.0 * std::numbers::pi / spec.wires;
+  // Squared distance from wire 0 at z = 0 to wire 1 at height z.
+  auto distance2 = [&](double z) { return 2.0 * R * R * (1.0 - std::cos(phi0 + k * z)) + z * z; };
+  // The minimum lies between z = 0 and the height where wire 1 passes over wire 0's start angle.
+  const double z_end = std::abs(k) > 1e-12 ? -phi0 / k : 0.0;
+  double a = std::min(0.0, z_end), b = std::max(0.0, z_end);
+  double best = a, best_value = distance2(a);
+  const int samples = 400;
+  for (int s = 1; s <= samples; ++s) {
+    const double z = a + (b - a) * s / samples;
+    const double v = distance2(z);
+    if (v < best_value) best = z, best_value = v;
+  }
+  double lo = best - (b - a) / samples, hi = best + (b - a) / samples;
+  const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
+  for (int it = 0; it < 100; ++it) {
+    const double z1 = hi - golden * (hi - lo), z2 = lo + golden * (hi - lo);
+    if (distance2(z1) < distance2(z2)) hi = z2; else lo = z1;
+  }
+  return std::sqrt(distance2(0.5 * (lo + hi))) - spec.wire_diameter;
+}
+
+}  // namespace strandfem

@@ -1,0 +1,72 @@
+#include "strandfem/post/analytic.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace strandfem {
+namespace {
+const ElasticMaterial& material_of(const StrandSpec& strand, const LayerSpec& layer) {
+  return strand.materials.at(layer.material);
+}
+}  // namespace
+
+BendingStiffnessBounds bending_stiffness_bounds(const StrandSpec& strand) {
+  BendingStiffnessBounds b;
+  for (std::size_t i = 0; i < strand.layers.size(); ++i) {
+    const LayerSpec& layer = strand.layers[i];
+    const double E = material_of(strand, layer).youngs_modulus;
+    const double r = 0.5 * layer.wire_diameter;
+    const double area = std::numbers::pi * r * r, inertia = std::numbers::pi * std::pow(r, 4) / 4.0;
+    const double c = std::cos(layer.lay_angle), R = layer_radius(strand, static_cast<int>(i));
+    b.ei_min += layer.wires * E * inertia * c;
+    b.ei_max += layer.wires * (E * inertia * c + 0.5 * E * area * R * R * c * c * c);
+  }
+  return b;
+}
+
+LinearStrandStiffness linear_strand_stiffness(const StrandSpec& strand) {
+  LinearStrandStiffness k;
+  // Positive twist: the lay direction of the outer layer.
+  const int reference_direction = strand.layers.back().lay_direction;
+  for (std::size_t i = 0; i < strand.layers.size(); ++i) {
+    const LayerSpec& layer = strand.layers[i];
+    const ElasticMaterial& m = material_of(strand, layer);
+    const double r = 0.5 * layer.wire_diameter;
+    const double EA = m.youngs_modulus * std::numbers::pi * r * r;
+    const double EI = m.youngs_modulus * std::numbers::pi * std::pow(r, 4) / 4.0;
+    const double GJ = m.shear_modulus() * std::numbers::pi * std::pow(r, 4) / 2.0;
+    if (i == 0) {
+      k.c11 += layer.wires * EA;
+      k.c22 += layer.wires * GJ;
+      continue;
+    }
+    // Costello's helix angle is measured from the cross-section plane: alpha_c = pi/2 - lay angle.
+    const double s = std::cos(layer.lay_angle), c = std::sin(layer.lay_angle);
+    const double cos2 = c * c - s * s;
+    const double R = layer_radius(strand, static_cast<int>(i));
+    const double n = layer.wires;
+    // A layer laid against the reference direction couples twist and extension with the opposite sign.
+    const double sign = layer.lay_direction == reference_direction ? 1.0 : -1.0;
+    k.c11 += n * (EA * s * s * s + 2.0 * EI * s * s * s * std::pow(c, 4) / (R * R) +
+                  GJ * s * std::pow(c, 4) * cos2 / (R * R));
+    k.c12 += sign * n * s * s * c * (EA * R - 2.0 * EI * s * s * c * c / R - GJ * c * c * cos2 / R);
+    k.c21 += sign * n * s * s * c * (EA * R - 2.0 * EI * c * c * (1.0 + s * s) / R + GJ * s * s * cos2 / R);
+    k.c22 += n * (EA * R * R * s * c * c + 2.0 * EI * s * s * s * c * c * (1.0 + s * s) - GJ * std::pow(s, 5) * cos2);
+  }
+  return k;
+}
+
+StrandProperties strand_properties(const StrandSpec& strand) {
+  StrandProperties p;
+  for (const LayerSpec& layer : strand.layers) {
+    const ElasticMaterial& m = material_of(strand, layer);
+    const double area = std::numbers::pi * 0.25 * layer.wire_diameter * layer.wire_diameter;
+    p.metallic_area += layer.wires * area;
+    // density in t/mm^3 times mm^2 gives t/mm = 1e6 kg/m.
+    p.mass_per_length += layer.wires * m.density * area / std::cos(layer.lay_angle) * 1e6;
+    p.axial_stiffness_sum += layer.wires * m.youngs_modulus * area;
+  }
+  return p;
+}
+
+}  // namespace strandfem

@@ -1,0 +1,41 @@
+// Closed-form strand references: bending stiffness bounds (EImax, EImin) and linear axial-torsional stiffness.
+#pragma once
+#include <vector>
+
+#include "strandfem/geometry/strand.hpp"
+
+namespace strandfem {
+
+// Papailiou's bounds (1997), as used by the paper (eqs. 1.1, 1.2), summed over layers (core: alpha = 0, R = 0):
+//   EImin = sum n E I0 cos(alpha),  EImax = EImin + sum 1/2 n E A R^2 cos^3(alpha).   [N mm^2]
+struct BendingStiffnessBounds {
+  double ei_min = 0;
+  double ei_max = 0;
+};
+BendingStiffnessBounds bending_stiffness_bounds(const StrandSpec& strand);
+
+// Linearised thin-rod strand theory in the form of Costello (Theory of Wire Rope, 1997, ch. 3), derived
+// by linearising the Love rod equations of each helical wire about the straight-strand helix:
+//   F = C11 eps + C12 tau,   M = C21 eps + C22 tau
+// eps: strand axial strain, tau: strand twist per unit length (rad/mm, positive in the lay direction of
+// the outer layer), F in N, M in N mm. Assumptions: wires are thin elastic rods whose centerlines stay on
+// cylinders of fixed radius (no Poisson contraction, no contact flattening, no friction); the wire twist
+// follows the helix torsion; all wires of a layer share the load equally; the core sees eps and tau only.
+// Fixed ends (tau = 0): k_fixed = C11. Free ends (M = 0): k_free = C11 - C12 C21 / C22, with the end
+// rotating by tau = -C21/C22 eps per unit length.
+struct LinearStrandStiffness {
+  double c11 = 0, c12 = 0, c21 = 0, c22 = 0;
+  double axial_fixed() const { return c11; }
+  double axial_free() const { return c11 - c12 * c21 / c22; }
+  double twist_per_strain_free() const { return -c21 / c22; }
+};
+LinearStrandStiffness linear_strand_stiffness(const StrandSpec& strand);
+
+struct StrandProperties {
+  double metallic_area = 0;    // mm^2, sum of wire cross-sections
+  double mass_per_length = 0;  // kg/m
+  double axial_stiffness_sum = 0;  // N, sum of E A over all wires (no lay-angle reduction)
+};
+StrandProperties strand_properties(const StrandSpec& strand);
+
+}  // namespace strandfem

@@ -1,0 +1,32 @@
+// Global assembly of beam (and later contact) contributions into nodal forces and a CSC tangent.
+#pragma once
+#include <vector>
+
+#include "strandfem/solver/linear_solver.hpp"
+#include "strandfem/solver/model.hpp"
+
+namespace strandfem {
+
+// Builds the tangent's sparsity pattern once per DOF map and scatters element contributions into value
+// slots (no triplets inside Newton). Element evaluation runs in parallel; the scatter is sequential in
+// element order so the sums, and hence the results, do not depend on the thread count.
+class Assembler {
+ public:
+  Assembler(const Model& model, const DofMap& dofs);
+
+  const SparsePattern& pattern() const { return pattern_; }
+
+  // Internal nodal forces in master space (6 per node: force, moment about the node; tied slaves'
+  // forces moved to their masters) and, when values != nullptr, the tangent on free DOFs.
+  void assemble(Model& model, const std::vector<NodeState>& state, std::vector<double>& nodal_forces,
+                std::vector<double>* values);
+
+ private:
+  const DofMap& dofs_;
+  SparsePattern pattern_;
+  std::vector<int> element_slots_;               // 324 per element, -1 where row or column is constrained
+  std::vector<std::array<int, 9>> tie_slots_;    // master rotation-rotation slots per tie
+  std::vector<BeamElement::Output> outputs_;
+};
+
+}  // namespace strandfem

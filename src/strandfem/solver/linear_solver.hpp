@@ -1,0 +1,40 @@
+// Sparse direct solvers for unsymmetric systems behind one small interface (UMFPACK, MUMPS).
+#pragma once
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace strandfem {
+
+// Square sparse matrix pattern in compressed sparse column form (0-based, rows sorted in each column).
+struct SparsePattern {
+  int size = 0;
+  std::vector<int> column_start;  // size + 1 entries
+  std::vector<int> row_index;
+  std::size_t nonzeros() const { return row_index.size(); }
+  // Position of (row, col) in the value array, or -1 when outside the pattern.
+  int find(int row, int col) const;
+};
+
+class LinearSolver {
+ public:
+  virtual ~LinearSolver() = default;
+  // Symbolic analysis (fill-reducing ordering); kept while the pattern does not change.
+  virtual void analyze(const SparsePattern& pattern) = 0;
+  // Numerical factorization of values laid out as the analyzed pattern.
+  virtual void factorize(const std::vector<double>& values) = 0;
+  // Solves A x = b in place (b in, x out).
+  virtual void solve(std::vector<double>& rhs) = 0;
+  virtual std::string name() const = 0;
+};
+
+// "mumps" (default) or "umfpack"; throws std::invalid_argument for any other name.
+std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name);
+
+// Thrown when a factorization fails (singular matrix, out of memory).
+struct LinearSolverError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace strandfem

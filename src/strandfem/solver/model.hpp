@@ -1,0 +1,50 @@
+// A complete model: mesh, beam elements, rigid ties, supports, load steps and solver options.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "strandfem/analysis/load_protocol.hpp"
+#include "strandfem/beam/beam_element.hpp"
+#include "strandfem/constraints/rigid_tie.hpp"
+#include "strandfem/mesh/mesh.hpp"
+
+namespace strandfem {
+
+// Ceres-style options with documented defaults; validate() names the offending option.
+struct SolverOptions {
+  double force_tolerance = 0.005;         // ||force residual|| / reference force (paper: 0.5 %)
+  double moment_tolerance = 0.005;        // ||moment residual|| / reference moment
+  double displacement_tolerance = 0.005;  // ||last correction|| / ||increment displacement||
+  int max_iterations = 25;                // Newton iterations per increment before a cut-back
+  int max_cutbacks = 8;                   // successive halvings of an increment before giving up
+  std::string linear_solver = "mumps";    // mumps | umfpack
+  int threads = 0;                        // OpenMP threads for element evaluation; 0 = OpenMP default
+  void validate() const;                  // throws std::invalid_argument naming the bad option
+};
+
+struct Model {
+  Mesh mesh;
+  std::vector<BeamElement> elements;
+  std::vector<RigidTie> ties;
+  std::vector<Support> supports;
+  std::vector<LoadStep> steps;
+  SolverOptions options;
+
+  // Builds one BeamElement per mesh element from the mesh's reference configuration.
+  void build_elements();
+};
+
+// Degrees of freedom: each node has 6; slave nodes of rigid ties have none of their own (their motion
+// follows their master); supported and motion-driven DOFs are constrained (no equation).
+struct DofMap {
+  std::vector<int> tie_of;                    // node -> index into Model::ties, or -1
+  std::vector<std::array<int, 6>> equation;   // node -> equation numbers, -1 if constrained or slave
+  int equation_count = 0;
+
+  int master_of(const Model& model, int node) const { return tie_of[node] < 0 ? node : model.ties[tie_of[node]].master; }
+};
+
+// Throws std::invalid_argument for supports or loads on tied nodes and for doubly-tied nodes.
+DofMap build_dof_map(const Model& model);
+
+}  // namespace strandfem

@@ -1,0 +1,176 @@
+#include "strandfem/solver/static_analysis.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace strandfem {
+
+StaticAnalysis::StaticAnalysis(Model& model) : model_(model) {
+  model_.options.validate();
+  if (model_.options.threads > 0) omp_set_num_threads(model_.options.threads);
+  if (model_.elements.empty()) model_.build_elements();
+  dofs_ = build_dof_map(model_);
+  assembler_ = std::make_unique<Assembler>(model_, dofs_);
+  solver_ = make_linear_solver(model_.options.linear_solver);
+  solver_->analyze(assembler_->pattern());
+  for (const MeshNode& n : model_.mesh.nodes) state_.push_back(n.reference);
+  committed_state_ = state_;
+  // Scales that keep the convergence test meaningful when the reference load is zero.
+  double stiffest = 0, total_length = 0;
+  for (const BeamElement& e : model_.elements) {
+    stiffest = std::max(stiffest, e.section().elastic_stiffness()[0]);
+    total_length += e.reference_length();
+  }
+  force_floor_ = 1e-12 * stiffest;
+  length_scale_ = model_.elements.empty() ? 1.0 : total_length / model_.elements.size();
+  internal_forces_.assign(6 * state_.size(), 0.0);
+}
+
+void StaticAnalysis::update_slaves() {
+  for (const RigidTie& tie : model_.ties) state_[tie.slave] = tied_state(tie, state_[tie.master]);
+}
+
+bool StaticAnalysis::solve_increment(double step_fraction,
+                                     const std::map<ActionKey, std::pair<double, double>>& ramps,
+                                     IncrementReport& report,
+                                     const std::function<void(const IncrementReport&)>& on_progress) {
+  const SolverOptions& opt = model_.options;
+  const std::size_t node_count = state_.size();
+  std::vector<double> external(6 * node_count, 0.0);
+  // Imposed motions: move the driven DOFs to their targets before iterating.
+  for (const auto& [key, ramp] : ramps) {
+    const double target = ramp.first + step_fraction * (ramp.second - ramp.first);
+    if (key.kind == NodalAction::kForce) {
+      external[6 * key.node + key.component] += target;
+      continue;
+    }
+    const double delta = target - applied_motion_[key];
+    applied_motion_[key] = target;
+    NodeState& s = state_[key.node];
+    if (key.component < 3) s.position[key.component] += delta;
+    else s.rotation = (quaternion_from_rotation_vector(delta * Vec3::Unit(key.component - 3)) * s.rotation).normalized();
+  }
+  update_slaves();
+  const int n = dofs_.equation_count;
+  std::vector<double> rhs(n);
+  double increment_displacement2 = 0;
+  last_correction2_ = 0;
+  for (int iteration = 0; iteration <= opt.max_iterations; ++iteration) {
+    assembler_->assemble(model_, state_, internal_forces_, &values_);
+    double free_force2 = 0, free_moment2 = 0, ref_force2 = 0, ref_moment2 = 0;
+    for (std::size_t node = 0; node < node_count; ++node) {
+      if (dofs_.tie_of[node] >= 0) continue;
+      for (int c = 0; c < 6; ++c) {
+        const double f_int = internal_forces_[6 * node + c], f_ext = external[6 * node + c];
+        const int eq = dofs_.equation[node][c];
+        // Reference load: applied loads plus reactions at constrained DOFs.
+        const double reference = eq >= 0 ? f_ext : f_int;
+        (c < 3 ? ref_force2 : ref_moment2) += reference * reference;
+        if (eq < 0) continue;
+        const double residual = f_int - f_ext;
+        rhs[eq] = -residual;
+        (c < 3 ? free_force2 : free_moment2) += residual * residual;
+      }
+    }
+    const double force_ref = std::max(std::sqrt(ref_force2), force_floor_);
+    const double moment_ref = std::max({std::sqrt(ref_moment2), force_ref * length_scale_});
+    const double relative = std::max(std::sqrt(free_force2) / force_ref, std::sqrt(free_moment2) / moment_ref);
+    report.residual_history.push_back(relative);
+    report.residual_norm = relative;
+    report.iterations = iteration;
+    if (on_progress) on_progress(report);
+    if (!std::isfinite(relative)) return false;
+    const bool forces_ok = std::sqrt(free_force2) <= opt.force_tolerance * force_ref &&
+                           std::sqrt(free_moment2) <= opt.moment_tolerance * moment_ref;
+    // Displacement criterion: the last correction is small against the increment's motion (rotations
+    // weighted by the mean element length).
+    if (forces_ok && (iteration == 0 || last_correction2_ <= opt.displacement_tolerance *
+                                                                opt.displacement_tolerance * increment_displacement2))
+      return true;
+    if (iteration == opt.max_iterations) return false;
+    try {
+      solver_->factorize(values_);
+      solver_->solve(rhs);
+    } catch (const LinearSolverError&) {
+      return false;
+    }
+    last_correction2_ = 0;
+    for (std::size_t node = 0; node < node_count; ++node) {
+      if (dofs_.tie_of[node] >= 0) continue;
+      Vec3 du = Vec3::Zero(), dtheta = Vec3::Zero();
+      for (int c = 0; c < 6; ++c) {
+        const int eq = dofs_.equation[node][c];
+        if (eq < 0) continue;
+        (c < 3 ? du[c] : dtheta[c - 3]) = rhs[eq];
+      }
+      last_correction2_ += du.squaredNorm() + length_scale_ * length_scale_ * dtheta.squaredNorm();
+      state_[node].position += du;
+      state_[node].rotation = (quaternion_from_rotation_vector(dtheta) * state_[node].rotation).normalized();
+    }
+    update_slaves();
+    increment_displacement2 = 0;
+    for (std::size_t node = 0; node < node_count; ++node) {
+      const Vec3 rotation = rotation_vector_from_quaternion(state_[node].rotation * committed_state_[node].rotation.conjugate());
+      increment_displacement2 += (state_[node].position - committed_state_[node].position).squaredNorm() +
+                                 length_scale_ * length_scale_ * rotation.squaredNorm();
+    }
+  }
+  return false;
+}
+
+AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementReport&)>& on_increment,
+                                   const std::function<void(const IncrementReport&)>& on_progress) {
+  std::map<ActionKey, double> totals;  // totals at the end of the previous step
+  for (std::size_t s = 0; s < model_.steps.size(); ++s) {
+    const LoadStep& step = model_.steps[s];
+    std::map<ActionKey, std::pair<double, double>> ramps;
+    for (const auto& [key, value] : totals) ramps[key] = {value, value};
+    for (const NodalAction& a : step.actions) {
+      const ActionKey key{a.node, a.component, a.kind};
+      const double start = totals.count(key) ? totals[key] : 0.0;
+      ramps[key] = {start, a.value};
+    }
+    const double nominal = 1.0 / std::max(1, step.increments);
+    double fraction = 0, size = nominal;
+    int converged_increments = 0, cutbacks = 0;
+    while (fraction < 1.0 - 1e-12) {
+      const double target = std::min(1.0, fraction + size);
+      IncrementReport report;
+      report.step = static_cast<int>(s);
+      report.step_name = step.name;
+      report.increment = converged_increments + 1;
+      report.step_fraction = target;
+      if (solve_increment(target, ramps, report, on_progress)) {
+        for (BeamElement& e : model_.elements) e.commit();
+        committed_state_ = state_;
+        committed_motion_ = applied_motion_;
+        fraction = target;
+        ++converged_increments;
+        if (on_increment) on_increment(report);
+        // Regrow after an easy increment, never beyond the nominal size.
+        if (cutbacks > 0 && report.iterations <= 4) size = std::min(nominal, 2.0 * size);
+        if (size >= nominal) cutbacks = 0;
+      } else {
+        for (BeamElement& e : model_.elements) e.revert();
+        state_ = committed_state_;
+        applied_motion_ = committed_motion_;
+        assembler_->assemble(model_, state_, internal_forces_, nullptr);
+        if (++cutbacks > model_.options.max_cutbacks) {
+          AnalysisStatus status;
+          status.converged = false;
+          status.message = "step '" + step.name + "' (" + std::to_string(s + 1) + ") did not converge at load fraction " +
+                           std::to_string(target) + " after " + std::to_string(model_.options.max_cutbacks) +
+                           " increment cut-backs (last relative residual " + std::to_string(report.residual_norm) + ")";
+          return status;
+        }
+        size *= 0.5;
+      }
+    }
+    for (const auto& [key, ramp] : ramps) totals[key] = ramp.second;
+  }
+  return {};
+}
+
+}  // namespace strandfem

@@ -1,0 +1,68 @@
+// Incremental-iterative static analysis: load steps, full Newton-Raphson, increment cut-back and regrowth.
+#pragma once
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "strandfem/solver/assembler.hpp"
+#include "strandfem/solver/model.hpp"
+
+namespace strandfem {
+
+// What a converged increment reports.
+struct IncrementReport {
+  int step = 0;                // 0-based step index
+  std::string step_name;
+  int increment = 0;           // 1-based converged increment counter within the step
+  double step_fraction = 0;    // load factor within the step, 0..1
+  int iterations = 0;
+  std::vector<double> residual_history;  // relative residual (max of force and moment ratios) per iteration
+  double residual_norm = 0;    // the final relative residual
+};
+
+// Result of run(): 0 converged, otherwise a message saying where it stopped.
+struct AnalysisStatus {
+  bool converged = true;
+  std::string message;
+};
+
+class StaticAnalysis {
+ public:
+  explicit StaticAnalysis(Model& model);
+
+  // Runs every load step; calls on_increment after each converged increment (state committed) and
+  // on_progress after each Newton iteration (step, increment, iteration, relative residual).
+  AnalysisStatus run(const std::function<void(const IncrementReport&)>& on_increment,
+                     const std::function<void(const IncrementReport&)>& on_progress = {});
+
+  const std::vector<NodeState>& state() const { return state_; }
+  // Internal nodal forces of the last converged state (6 per node, master space): at constrained DOFs
+  // these are the reactions, at loaded DOFs the applied loads.
+  const std::vector<double>& internal_forces() const { return internal_forces_; }
+  const DofMap& dofs() const { return dofs_; }
+  const Model& model() const { return model_; }
+  const std::string& linear_solver_name() const { return solver_->name(); }
+
+ private:
+  struct ActionKey {
+    int node, component, kind;
+    auto operator<=>(const ActionKey&) const = default;
+  };
+  bool solve_increment(double step_fraction, const std::map<ActionKey, std::pair<double, double>>& ramps,
+                       IncrementReport& report, const std::function<void(const IncrementReport&)>& on_progress);
+  void update_slaves();
+
+  Model& model_;
+  DofMap dofs_;
+  std::unique_ptr<Assembler> assembler_;
+  std::unique_ptr<LinearSolver> solver_;
+  std::vector<NodeState> state_, committed_state_;
+  std::map<ActionKey, double> applied_motion_, committed_motion_;
+  std::vector<double> internal_forces_, values_;
+  double force_floor_ = 0, length_scale_ = 0;
+  double last_correction2_ = 0;
+};
+
+}  // namespace strandfem
