@@ -29,11 +29,15 @@ CenterlinePoint wire_centerline(const StrandSpec& strand, int layer, int wire_in
     return p;
   }
   const LayerSpec& spec = strand.layers[layer];
-  const double R = layer_radius(strand, layer);
-  const double q = spec.lay_direction;
-  // Angle rate along z: theta_i / L with theta_i = tan(alpha) L / R.
-  const double rate = q * std::tan(spec.lay_angle) / R;
-  const double phi = spec.start_angle + 2.0 * std::numbers::pi * wire_in_layer / spec.wires + rate * z;
+  return helix_point(layer_radius(strand, layer), spec.lay_angle, spec.lay_direction,
+                     spec.start_angle + 2.0 * std::numbers::pi * wire_in_layer / spec.wires, z);
+}
+
+CenterlinePoint helix_point(double radius, double lay_angle, int direction, double start_angle, double z) {
+  // Angle rate along z: theta_i / L with theta_i = tan(alpha) L / R (eq. 2.2).
+  const double R = radius, rate = direction * std::tan(lay_angle) / R;
+  const double phi = start_angle + rate * z;
+  CenterlinePoint p;
   p.position = Vec3(R * std::cos(phi), R * std::sin(phi), z);
   const Vec3 tangent = Vec3(-R * rate * std::sin(phi), R * rate * std::cos(phi), 1.0).normalized();
   const Vec3 inward(-std::cos(phi), -std::sin(phi), 0.0);

@@ -39,6 +39,10 @@ struct CenterlinePoint {
 };
 CenterlinePoint wire_centerline(const StrandSpec& strand, int layer, int wire_in_layer, double z);
 
+// Point and frame of a helix about the z axis: radius, lay angle (rad), direction (+1 right-hand),
+// angular position at z = 0 (rad).
+CenterlinePoint helix_point(double radius, double lay_angle, int direction, double start_angle, double z);
+
 // Smallest distance between the centerlines of two neighbouring wires of a layer minus one wire diameter:
 // negative values are overlaps of the nominal geometry. NaN for the core and single-wire layers.
 double lateral_clearance(const StrandSpec& strand, int layer);

@@ -43,7 +43,7 @@ class StaticAnalysis {
   const std::vector<double>& internal_forces() const { return internal_forces_; }
   const DofMap& dofs() const { return dofs_; }
   const Model& model() const { return model_; }
-  const std::string& linear_solver_name() const { return solver_->name(); }
+  std::string linear_solver_name() const { return solver_->name(); }
 
  private:
   struct ActionKey {

@@ -1,0 +1,397 @@
+#include "strandfem/io/case_file.hpp"
+
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <sstream>
+
+#include "strandfem/geometry/beam_line.hpp"
+
+namespace strandfem {
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180.0;
+const char* const kComponentNames[6] = {"ux", "uy", "uz", "rx", "ry", "rz"};
+
+std::string at(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
+
+class CaseParser {
+ public:
+  CaseParser(const std::string& path, CaseDefinition& out) : reader_(path), out_(out) {}
+
+  void parse(const YAML::Node& root) {
+    reader_.check_keys(root, "", {"title", "description", "materials", "strand", "beams", "mesh", "supports", "steps",
+                                  "solver", "output", "expected"});
+    out_.title = root["title"] ? reader_.text(root["title"], "title") : "untitled";
+    parse_materials(reader_.require(root, "", "materials"));
+    const bool has_strand = root["strand"].IsDefined(), has_beams = root["beams"].IsDefined();
+    if (has_strand == has_beams) reader_.fail(root, "strand/beams", "expected exactly one of 'strand' or 'beams'");
+    if (has_strand) parse_strand(root["strand"], root["mesh"]);
+    else {
+      if (root["mesh"]) reader_.fail(root["mesh"], "mesh", "only strands take 'mesh'; beams set 'elements' per line");
+      parse_beams(root["beams"]);
+    }
+    if (root["supports"]) parse_supports(root["supports"]);
+    parse_steps(reader_.require(root, "", "steps"));
+    if (root["solver"]) parse_solver(root["solver"]);
+    if (root["output"]) parse_output(root["output"]);
+    try {
+      out_.model.options.validate();
+    } catch (const std::invalid_argument& e) {
+      reader_.fail(root["solver"], "solver", e.what());
+    }
+  }
+
+ private:
+  void parse_materials(const YAML::Node& node) {
+    if (!node.IsMap() || node.size() == 0) reader_.fail(node, "materials", "expected a mapping name -> {E, nu, density}");
+    for (const auto& entry : node) {
+      const std::string name = entry.first.as<std::string>(), path = "materials." + name;
+      reader_.check_keys(entry.second, path, {"E", "nu", "density"});
+      ElasticMaterial m;
+      m.youngs_modulus = reader_.positive(reader_.require(entry.second, path, "E"), path + ".E", "MPa");
+      m.poisson_ratio = reader_.number(reader_.require(entry.second, path, "nu"), path + ".nu");
+      if (!(m.poisson_ratio > -1.0 && m.poisson_ratio < 0.5))
+        reader_.fail(entry.second["nu"], path + ".nu", "expected a Poisson ratio in (-1, 0.5)");
+      if (entry.second["density"]) m.density = reader_.non_negative(entry.second["density"], path + ".density", "t/mm^3");
+      materials_[name] = m;
+    }
+  }
+
+  const ElasticMaterial& material(const YAML::Node& node, const std::string& path) {
+    const std::string name = reader_.text(node, path);
+    const auto it = materials_.find(name);
+    if (it == materials_.end()) reader_.fail(node, path, "unknown material '" + name + "' (define it under 'materials')");
+    return it->second;
+  }
+
+  void parse_strand(const YAML::Node& node, const YAML::Node& mesh) {
+    reader_.check_keys(node, "strand", {"length", "layers", "ends"});
+    StrandSpec spec;
+    spec.materials = materials_;
+    spec.length = reader_.positive(reader_.require(node, "strand", "length"), "strand.length", "mm");
+    const YAML::Node layers = reader_.require(node, "strand", "layers");
+    if (!layers.IsSequence() || layers.size() == 0) reader_.fail(layers, "strand.layers", "expected a list of layers, core first");
+    const std::vector<int> default_directions = default_lay_directions(static_cast<int>(layers.size()));
+    for (std::size_t i = 0; i < layers.size(); ++i) {
+      const YAML::Node l = layers[i];
+      const std::string path = at("strand.layers", i);
+      reader_.check_keys(l, path, {"wires", "diameter", "material", "lay_angle", "lay_direction", "start_angle"});
+      LayerSpec layer;
+      layer.wires = reader_.integer(reader_.require(l, path, "wires"), path + ".wires", 1);
+      layer.wire_diameter = reader_.positive(reader_.require(l, path, "diameter"), path + ".diameter", "mm");
+      layer.material = reader_.text(reader_.require(l, path, "material"), path + ".material");
+      material(l["material"], path + ".material");
+      if (i == 0) {
+        if (layer.wires != 1) reader_.fail(l["wires"], path + ".wires", "the core (first layer) must have exactly 1 wire");
+        if (l["lay_angle"] || l["lay_direction"]) reader_.fail(l, path, "the core is straight: no lay_angle or lay_direction");
+      } else {
+        const double angle = reader_.number(reader_.require(l, path, "lay_angle"), path + ".lay_angle");
+        if (!(angle > 0 && angle < 90)) reader_.fail(l["lay_angle"], path + ".lay_angle", "expected a lay angle in (0, 90) degrees");
+        layer.lay_angle = angle * kDegree;
+        layer.lay_direction = default_directions[i];
+        if (l["lay_direction"])
+          layer.lay_direction = reader_.choice(l["lay_direction"], path + ".lay_direction", {"right", "left"}) == "right" ? 1 : -1;
+      }
+      if (l["start_angle"]) layer.start_angle = reader_.number(l["start_angle"], path + ".start_angle") * kDegree;
+      spec.layers.push_back(layer);
+    }
+    // Nominal overlaps: warn for small ones (real strands have them), refuse large ones.
+    for (std::size_t i = 1; i < spec.layers.size(); ++i) {
+      const double clearance = lateral_clearance(spec, static_cast<int>(i));
+      if (std::isnan(clearance) || clearance >= 0) continue;
+      const double radius = 0.5 * spec.layers[i].wire_diameter;
+      std::ostringstream msg;
+      msg << "layer " << i << ": neighbouring wires overlap by " << -clearance << " mm at the nominal radius of eq. 2.1";
+      if (-clearance > 0.25 * radius)
+        reader_.fail(layers[i], at("strand.layers", i), msg.str() + ", more than 25 % of the wire radius: check wires, diameter and lay_angle");
+      out_.warnings.push_back(msg.str());
+    }
+    out_.end_type = node["ends"] ? reader_.choice(node["ends"], "strand.ends", {"fixed", "free"}) : "fixed";
+    if (mesh) {
+      reader_.check_keys(mesh, "mesh", {"element_length", "elements_per_wire"});
+      if (mesh["element_length"] && mesh["elements_per_wire"])
+        reader_.fail(mesh, "mesh", "give either element_length or elements_per_wire, not both");
+      if (mesh["element_length"]) out_.mesh_spec.element_length = reader_.positive(mesh["element_length"], "mesh.element_length", "mm");
+      if (mesh["elements_per_wire"]) out_.mesh_spec.elements_per_wire = reader_.integer(mesh["elements_per_wire"], "mesh.elements_per_wire", 1);
+    }
+    out_.model.mesh = mesh_strand(spec, out_.mesh_spec);
+    Mesh& m = out_.model.mesh;
+    const MeshWire& core = m.wires[0];
+    out_.start_node = core.nodes.front();
+    out_.end_node = core.nodes.back();
+    out_.axial_length = spec.length;
+    out_.monitor_node = core.nodes[core.nodes.size() / 2];
+    // Rigid end planes: every wire's end node tied to the core end node (paper section 2.4).
+    for (std::size_t w = 1; w < m.wires.size(); ++w) {
+      for (const int end : {0, 1}) {
+        const int slave = end == 0 ? m.wires[w].nodes.front() : m.wires[w].nodes.back();
+        const int master = end == 0 ? out_.start_node : out_.end_node;
+        out_.model.ties.push_back(make_rigid_tie(slave, master, m.nodes[slave].reference, m.nodes[master].reference));
+      }
+    }
+    // End z = 0 clamped; end z = L keeps its axial displacement free, and its twist when the ends are free.
+    Support clamp{out_.start_node, {true, true, true, true, true, true}};
+    Support far{out_.end_node, {true, true, false, true, true, out_.end_type == "fixed"}};
+    out_.model.supports = {clamp, far};
+    out_.strand = spec;
+  }
+
+  void parse_beams(const YAML::Node& node) {
+    if (!node.IsSequence() || node.size() == 0) reader_.fail(node, "beams", "expected a list of beam lines");
+    for (std::size_t i = 0; i < node.size(); ++i) {
+      const YAML::Node b = node[i];
+      const std::string path = at("beams", i);
+      reader_.check_keys(b, path, {"name", "material", "section", "shape", "elements"});
+      BeamLineSpec line;
+      line.name = reader_.text(reader_.require(b, path, "name"), path + ".name");
+      for (const MeshWire& w : out_.model.mesh.wires)
+        if (w.name == line.name) reader_.fail(b["name"], path + ".name", "duplicate beam name '" + line.name + "'");
+      const ElasticMaterial& mat = material(reader_.require(b, path, "material"), path + ".material");
+      const YAML::Node s = reader_.require(b, path, "section");
+      reader_.check_keys(s, path + ".section", {"diameter", "area", "inertia_2", "inertia_3", "torsion_constant", "shear_factor"});
+      SectionGeometry geometry;
+      if (s["diameter"]) {
+        if (s.size() != 1) reader_.fail(s, path + ".section", "a circular section takes only 'diameter'");
+        geometry = SectionGeometry::circle(reader_.positive(s["diameter"], path + ".section.diameter", "mm"), mat.poisson_ratio);
+      } else {
+        const std::string sp = path + ".section";
+        geometry.area = reader_.positive(reader_.require(s, sp, "area"), sp + ".area", "mm^2");
+        geometry.inertia_2 = reader_.positive(reader_.require(s, sp, "inertia_2"), sp + ".inertia_2", "mm^4");
+        geometry.inertia_3 = reader_.positive(reader_.require(s, sp, "inertia_3"), sp + ".inertia_3", "mm^4");
+        geometry.torsion_constant = reader_.positive(reader_.require(s, sp, "torsion_constant"), sp + ".torsion_constant", "mm^4");
+        geometry.shear_factor = reader_.positive(reader_.require(s, sp, "shear_factor"), sp + ".shear_factor", "-");
+      }
+      line.elements = reader_.integer(reader_.require(b, path, "elements"), path + ".elements", 1);
+      parse_shape(reader_.require(b, path, "shape"), path + ".shape", line);
+      Mesh& m = out_.model.mesh;
+      m.sections.push_back(std::make_unique<ElasticSection>(geometry, mat));
+      add_beam_line(m, line, static_cast<int>(m.sections.size()) - 1);
+    }
+    const MeshWire& first = out_.model.mesh.wires[0];
+    out_.start_node = first.nodes.front();
+    out_.monitor_node = first.nodes.back();
+  }
+
+  void parse_shape(const YAML::Node& s, const std::string& path, BeamLineSpec& line) {
+    const std::string type = reader_.choice(reader_.require(s, path, "type"), path + ".type", {"straight", "arc", "helix"});
+    auto vec = [&](const char* key) {
+      const auto v = reader_.numbers(reader_.require(s, path, key), path + "." + key, 3);
+      return Vec3(v[0], v[1], v[2]);
+    };
+    if (type == "straight") {
+      reader_.check_keys(s, path, {"type", "start", "end", "normal"});
+      line.shape = BeamLineSpec::kStraight;
+      line.start = vec("start");
+      line.end = vec("end");
+      if ((line.end - line.start).norm() <= 0) reader_.fail(s, path, "start and end coincide");
+      if (s["normal"]) line.normal = vec("normal");
+    } else if (type == "arc") {
+      reader_.check_keys(s, path, {"type", "center", "radius", "start_angle", "end_angle", "axis"});
+      line.shape = BeamLineSpec::kArc;
+      line.center = vec("center");
+      line.radius = reader_.positive(reader_.require(s, path, "radius"), path + ".radius", "mm");
+      line.start_angle = reader_.number(reader_.require(s, path, "start_angle"), path + ".start_angle") * kDegree;
+      line.end_angle = reader_.number(reader_.require(s, path, "end_angle"), path + ".end_angle") * kDegree;
+      if (s["axis"]) line.axis = vec("axis");
+      if (line.start_angle == line.end_angle) reader_.fail(s, path, "start_angle equals end_angle");
+    } else {
+      reader_.check_keys(s, path, {"type", "radius", "lay_angle", "length", "lay_direction", "start_angle"});
+      line.shape = BeamLineSpec::kHelix;
+      line.radius = reader_.positive(reader_.require(s, path, "radius"), path + ".radius", "mm");
+      const double angle = reader_.number(reader_.require(s, path, "lay_angle"), path + ".lay_angle");
+      if (!(angle > 0 && angle < 90)) reader_.fail(s["lay_angle"], path + ".lay_angle", "expected a lay angle in (0, 90) degrees");
+      line.lay_angle = angle * kDegree;
+      line.length = reader_.positive(reader_.require(s, path, "length"), path + ".length", "mm");
+      if (s["lay_direction"]) line.lay_direction = reader_.choice(s["lay_direction"], path + ".lay_direction", {"right", "left"}) == "right" ? 1 : -1;
+      if (s["start_angle"]) line.start_angle = reader_.number(s["start_angle"], path + ".start_angle") * kDegree;
+    }
+  }
+
+  // Node selectors: {core: start|end}, {core_z: z} for strands; {beam: name, point: start|middle|end} or
+  // {beam: name, node: k} for beam lines.
+  int node_at(const YAML::Node& n, const std::string& path) {
+    const Mesh& m = out_.model.mesh;
+    if (out_.strand) {
+      reader_.check_keys(n, path, {"core", "core_z"});
+      const MeshWire& core = m.wires[0];
+      if (n["core"]) return reader_.choice(n["core"], path + ".core", {"start", "end"}) == "start" ? core.nodes.front() : core.nodes.back();
+      const double z = reader_.number(reader_.require(n, path, "core_z"), path + ".core_z");
+      if (z < 0 || z > out_.strand->length) reader_.fail(n["core_z"], path + ".core_z", "expected a position within the strand length");
+      int best = core.nodes.front();
+      for (const int node : core.nodes)
+        if (std::abs(m.nodes[node].reference.position.z() - z) < std::abs(m.nodes[best].reference.position.z() - z)) best = node;
+      return best;
+    }
+    reader_.check_keys(n, path, {"beam", "point", "node"});
+    const std::string name = reader_.text(reader_.require(n, path, "beam"), path + ".beam");
+    for (const MeshWire& w : m.wires) {
+      if (w.name != name) continue;
+      if (n["node"]) {
+        const int k = reader_.integer(n["node"], path + ".node", 0);
+        if (k >= static_cast<int>(w.nodes.size())) reader_.fail(n["node"], path + ".node", "beyond the line's last node " + std::to_string(w.nodes.size() - 1));
+        return w.nodes[k];
+      }
+      const std::string p = reader_.choice(reader_.require(n, path, "point"), path + ".point", {"start", "middle", "end"});
+      return p == "start" ? w.nodes.front() : p == "end" ? w.nodes.back() : w.nodes[w.nodes.size() / 2];
+    }
+    reader_.fail(n["beam"], path + ".beam", "no beam named '" + name + "'");
+  }
+
+  void parse_supports(const YAML::Node& node) {
+    if (!node.IsSequence()) reader_.fail(node, "supports", "expected a list of {at, fix}");
+    for (std::size_t i = 0; i < node.size(); ++i) {
+      const std::string path = at("supports", i);
+      reader_.check_keys(node[i], path, {"at", "fix"});
+      Support s;
+      s.node = node_at(reader_.require(node[i], path, "at"), path + ".at");
+      const YAML::Node fix = reader_.require(node[i], path, "fix");
+      if (fix.IsScalar() && fix.Scalar() == "all") s.fixed.fill(true);
+      else if (fix.IsSequence()) {
+        for (std::size_t k = 0; k < fix.size(); ++k) {
+          const std::string c = reader_.choice(fix[k], at(path + ".fix", k), {"ux", "uy", "uz", "rx", "ry", "rz"});
+          for (int j = 0; j < 6; ++j) if (c == kComponentNames[j]) s.fixed[j] = true;
+        }
+      } else reader_.fail(fix, path + ".fix", "expected 'all' or a list of ux, uy, uz, rx, ry, rz");
+      out_.model.supports.push_back(s);
+    }
+  }
+
+  void parse_steps(const YAML::Node& node) {
+    if (!node.IsSequence() || node.size() == 0) reader_.fail(node, "steps", "expected a list of load steps");
+    for (std::size_t i = 0; i < node.size(); ++i) {
+      const YAML::Node s = node[i];
+      const std::string path = at("steps", i);
+      if (out_.strand)
+        reader_.check_keys(s, path, {"name", "increments", "axial_strain", "axial_force", "torque", "twist", "transverse_force", "forces", "motions"});
+      else
+        reader_.check_keys(s, path, {"name", "increments", "forces", "motions"});
+      LoadStep step;
+      step.name = s["name"] ? reader_.text(s["name"], path + ".name") : "step" + std::to_string(i + 1);
+      step.increments = reader_.integer(reader_.require(s, path, "increments"), path + ".increments", 1);
+      if (out_.strand) parse_strand_actions(s, path, step);
+      if (s["forces"]) parse_forces(s["forces"], path + ".forces", step);
+      if (s["motions"]) parse_motions(s["motions"], path + ".motions", step);
+      out_.model.steps.push_back(step);
+    }
+  }
+
+  void parse_strand_actions(const YAML::Node& s, const std::string& path, LoadStep& step) {
+    const int end = out_.end_node;
+    if (s["axial_strain"] && s["axial_force"]) reader_.fail(s, path, "give axial_strain or axial_force, not both");
+    if (s["torque"] && s["twist"]) reader_.fail(s, path, "give torque or twist, not both");
+    if (s["axial_strain"])
+      step.actions.push_back({NodalAction::kMotion, end, kUz, reader_.number(s["axial_strain"], path + ".axial_strain") * out_.axial_length});
+    if (s["axial_force"])
+      step.actions.push_back({NodalAction::kForce, end, kUz, reader_.number(s["axial_force"], path + ".axial_force")});
+    if (s["torque"] || s["twist"]) {
+      if (out_.end_type == "fixed") reader_.fail(s, path, "torque and twist need strand.ends: free (fixed ends hold the rotation)");
+      if (s["torque"]) step.actions.push_back({NodalAction::kForce, end, kRz, reader_.number(s["torque"], path + ".torque")});
+      else step.actions.push_back({NodalAction::kMotion, end, kRz, reader_.number(s["twist"], path + ".twist") * kDegree});
+    }
+    if (s["transverse_force"]) {
+      const YAML::Node t = s["transverse_force"];
+      const std::string tp = path + ".transverse_force";
+      reader_.check_keys(t, tp, {"value", "z", "direction"});
+      const double value = reader_.number(reader_.require(t, tp, "value"), tp + ".value");
+      YAML::Node selector;
+      selector["core_z"] = reader_.require(t, tp, "z");
+      const int node = node_at(selector, tp);
+      Vec3 direction = Vec3::UnitY();
+      if (t["direction"]) {
+        const auto d = reader_.numbers(t["direction"], tp + ".direction", 3);
+        direction = Vec3(d[0], d[1], d[2]);
+        if (std::abs(direction.z()) > 1e-12 || direction.norm() == 0)
+          reader_.fail(t["direction"], tp + ".direction", "expected a non-zero direction perpendicular to the strand axis (z = 0)");
+        direction.normalize();
+      }
+      for (int c = 0; c < 2; ++c)
+        if (direction[c] != 0) step.actions.push_back({NodalAction::kForce, node, c, value * direction[c]});
+    }
+  }
+
+  void parse_forces(const YAML::Node& node, const std::string& path, LoadStep& step) {
+    if (!node.IsSequence()) reader_.fail(node, path, "expected a list of {at, force, moment}");
+    for (std::size_t i = 0; i < node.size(); ++i) {
+      const std::string p = at(path, i);
+      reader_.check_keys(node[i], p, {"at", "force", "moment"});
+      const int n = node_at(reader_.require(node[i], p, "at"), p + ".at");
+      if (!node[i]["force"] && !node[i]["moment"]) reader_.fail(node[i], p, "expected 'force' and/or 'moment'");
+      for (const char* key : {"force", "moment"}) {
+        if (!node[i][key]) continue;
+        const auto v = reader_.numbers(node[i][key], p + "." + key, 3);
+        const int offset = std::string(key) == "force" ? 0 : 3;
+        for (int c = 0; c < 3; ++c) step.actions.push_back({NodalAction::kForce, n, offset + c, v[c]});
+      }
+    }
+  }
+
+  void parse_motions(const YAML::Node& node, const std::string& path, LoadStep& step) {
+    if (!node.IsSequence()) reader_.fail(node, path, "expected a list of {at, ux.., rz (deg)}");
+    for (std::size_t i = 0; i < node.size(); ++i) {
+      const std::string p = at(path, i);
+      reader_.check_keys(node[i], p, {"at", "ux", "uy", "uz", "rx", "ry", "rz"});
+      const int n = node_at(reader_.require(node[i], p, "at"), p + ".at");
+      for (int c = 0; c < 6; ++c)
+        if (node[i][kComponentNames[c]])
+          step.actions.push_back({NodalAction::kMotion, n, c,
+                                  reader_.number(node[i][kComponentNames[c]], p + "." + kComponentNames[c]) * (c >= 3 ? kDegree : 1.0)});
+    }
+  }
+
+  void parse_solver(const YAML::Node& node) {
+    reader_.check_keys(node, "solver", {"force_tolerance", "moment_tolerance", "displacement_tolerance", "max_iterations",
+                                        "max_cutbacks", "linear_solver", "threads"});
+    SolverOptions& o = out_.model.options;
+    if (node["force_tolerance"]) o.force_tolerance = reader_.positive(node["force_tolerance"], "solver.force_tolerance", "-");
+    if (node["moment_tolerance"]) o.moment_tolerance = reader_.positive(node["moment_tolerance"], "solver.moment_tolerance", "-");
+    if (node["displacement_tolerance"]) o.displacement_tolerance = reader_.positive(node["displacement_tolerance"], "solver.displacement_tolerance", "-");
+    if (node["max_iterations"]) o.max_iterations = reader_.integer(node["max_iterations"], "solver.max_iterations", 1);
+    if (node["max_cutbacks"]) o.max_cutbacks = reader_.integer(node["max_cutbacks"], "solver.max_cutbacks", 0);
+    if (node["linear_solver"]) o.linear_solver = reader_.choice(node["linear_solver"], "solver.linear_solver", {"mumps", "umfpack"});
+    if (node["threads"]) o.threads = reader_.integer(node["threads"], "solver.threads", 0);
+  }
+
+  void parse_output(const YAML::Node& node) {
+    reader_.check_keys(node, "output", {"every", "vtu", "monitor"});
+    if (node["every"]) out_.output.every = reader_.integer(node["every"], "output.every", 1);
+    if (node["vtu"]) out_.output.vtu = reader_.boolean(node["vtu"], "output.vtu");
+    if (node["monitor"]) out_.monitor_node = node_at(node["monitor"], "output.monitor");
+  }
+
+  YamlReader reader_;
+  CaseDefinition& out_;
+  std::map<std::string, ElasticMaterial> materials_;
+};
+
+}  // namespace
+
+CaseDefinition load_case(const std::string& path) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::BadFile&) {
+    throw CaseError(path + ": cannot open the case file");
+  } catch (const YAML::Exception& e) {
+    throw CaseError(path + ": not valid YAML: " + e.what());
+  }
+  if (!root.IsMap()) throw CaseError(path + ": expected a YAML mapping at the top level");
+  CaseDefinition c;
+  c.path = path;
+  CaseParser(path, c).parse(root);
+  c.model.build_elements();
+  std::stringstream yaml_text;
+  yaml_text << root;
+  c.resolved["case_file"] = path;
+  c.resolved["case"] = yaml_text.str();
+  c.resolved["solver"] = {{"force_tolerance", c.model.options.force_tolerance},
+                          {"moment_tolerance", c.model.options.moment_tolerance},
+                          {"displacement_tolerance", c.model.options.displacement_tolerance},
+                          {"max_iterations", c.model.options.max_iterations},
+                          {"max_cutbacks", c.model.options.max_cutbacks},
+                          {"linear_solver", c.model.options.linear_solver},
+                          {"threads", c.model.options.threads}};
+  return c;
+}
+
+}  // namespace strandfem

@@ -1,0 +1,40 @@
+// Case files (YAML): strands or free beam lines, supports, load steps, solver and output options.
+#pragma once
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "strandfem/io/yaml_reader.hpp"
+#include "strandfem/mesh/mesh.hpp"
+#include "strandfem/solver/model.hpp"
+
+namespace strandfem {
+
+struct OutputOptions {
+  int every = 1;      // write ParaView files every n-th converged increment (the last one always)
+  bool vtu = true;
+};
+
+// A parsed, validated case: the model plus what the outputs need to know about it.
+struct CaseDefinition {
+  std::string title;
+  std::string path;
+  std::optional<StrandSpec> strand;   // present for strand cases
+  std::string end_type;               // strand: fixed | free
+  MeshSpec mesh_spec;
+  Model model;
+  OutputOptions output;
+  // Result probes. Strands: core end nodes. Beams: first beam's start and the monitor node.
+  int start_node = -1;
+  int end_node = -1;
+  int monitor_node = -1;              // strand: core node nearest mid-length
+  double axial_length = 0;            // strand length (for the axial strain)
+  std::vector<std::string> warnings;  // e.g. nominal overlaps of neighbouring wires
+  nlohmann::json resolved;            // the fully resolved configuration, written with the results
+};
+
+// Reads and validates a case file; throws CaseError naming the key and the expected value.
+CaseDefinition load_case(const std::string& path);
+
+}  // namespace strandfem

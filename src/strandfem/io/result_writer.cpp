@@ -1,0 +1,161 @@
+#include "strandfem/io/result_writer.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace strandfem {
+namespace {
+
+Vec3 displacement(const StaticAnalysis& a, int node) {
+  return a.state()[node].position - a.model().mesh.nodes[node].reference.position;
+}
+Vec3 rotation(const StaticAnalysis& a, int node) {
+  return rotation_vector_from_quaternion(a.state()[node].rotation * a.model().mesh.nodes[node].reference.rotation.conjugate());
+}
+
+}  // namespace
+
+HistoryRow history_row(const CaseDefinition& c, const StaticAnalysis& analysis, const IncrementReport& report) {
+  HistoryRow row;
+  row.step = report.step + 1;
+  row.increment = report.increment;
+  row.load_factor = report.step + report.step_fraction;
+  row.iterations = report.iterations;
+  row.residual_norm = report.residual_norm;
+  const auto& f = analysis.internal_forces();
+  if (c.monitor_node >= 0) row.monitor_displacement = displacement(analysis, c.monitor_node);
+  // Loaded nodes: those carrying a force action in any step.
+  Vec3 applied = Vec3::Zero();
+  std::vector<bool> loaded(c.model.mesh.nodes.size(), false);
+  for (const LoadStep& s : c.model.steps)
+    for (const NodalAction& a : s.actions)
+      if (a.kind == NodalAction::kForce && a.component < 3) loaded[a.node] = true;
+  for (std::size_t n = 0; n < loaded.size(); ++n)
+    if (loaded[n] && !(c.strand && static_cast<int>(n) == c.end_node))
+      applied += Vec3(f[6 * n], f[6 * n + 1], f[6 * n + 2]);
+  if (c.strand) {
+    const int end = c.end_node, start = c.start_node;
+    row.axial_strain = (displacement(analysis, end).z() - displacement(analysis, start).z()) / c.axial_length;
+    row.axial_force = f[6 * end + 2];
+    row.torque = f[6 * end + 5];
+    row.end_rotation = rotation(analysis, end).z();
+    row.transverse_load = std::hypot(applied.x(), applied.y());
+    row.midspan_deflection = std::hypot(row.monitor_displacement.x(), row.monitor_displacement.y());
+  } else {
+    row.transverse_load = applied.norm();
+    row.midspan_deflection = row.monitor_displacement.norm();
+  }
+  return row;
+}
+
+ResultWriter::ResultWriter(std::filesystem::path directory, const CaseDefinition& c)
+    : directory_(std::move(directory)), case_(c) {
+  std::filesystem::create_directories(directory_);
+  for (const auto& entry : std::filesystem::directory_iterator(directory_)) {
+    const auto ext = entry.path().extension();
+    if (ext == ".vtu" || ext == ".pvd") std::filesystem::remove(entry.path());
+  }
+  history_.open(directory_ / "history.csv");
+  if (!history_) throw std::runtime_error("cannot write " + (directory_ / "history.csv").string());
+  history_ << "step,increment,load_factor,axial_strain,axial_force_N,torque_Nmm,end_rotation_rad,transverse_load_N,"
+              "midspan_deflection_mm,monitor_ux_mm,monitor_uy_mm,monitor_uz_mm,newton_iterations,residual_norm\n";
+}
+
+void ResultWriter::on_increment(const StaticAnalysis& analysis, const IncrementReport& report) {
+  const HistoryRow r = history_row(case_, analysis, report);
+  rows_.push_back(r);
+  history_ << fmt::format("{},{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{},{:.4e}\n",
+                          r.step, r.increment, r.load_factor, r.axial_strain, r.axial_force, r.torque, r.end_rotation,
+                          r.transverse_load, r.midspan_deflection, r.monitor_displacement.x(), r.monitor_displacement.y(),
+                          r.monitor_displacement.z(), r.iterations, r.residual_norm);
+  history_.flush();
+  ++increments_seen_;
+  last_written_ = false;
+  if (case_.output.vtu && increments_seen_ % case_.output.every == 0) {
+    write_vtu(analysis, r.load_factor);
+    last_written_ = true;
+  }
+}
+
+void ResultWriter::write_vtu(const StaticAnalysis& analysis, double time) {
+  const Model& model = analysis.model();
+  const Mesh& mesh = model.mesh;
+  const std::string name = fmt::format("result_{:05d}.vtu", frames_.size());
+  std::ofstream out(directory_ / name);
+  const std::size_t points = mesh.nodes.size(), cells = 2 * mesh.elements.size();
+  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+      << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << points << "\" NumberOfCells=\"" << cells << "\">\n";
+  out << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  for (const MeshNode& n : mesh.nodes) out << fmt::format("{:.9g} {:.9g} {:.9g}\n", n.reference.position.x(), n.reference.position.y(), n.reference.position.z());
+  out << "</DataArray>\n</Points>\n<PointData Vectors=\"displacement\">\n";
+  out << "<DataArray type=\"Float64\" Name=\"displacement\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  for (std::size_t i = 0; i < points; ++i) {
+    const Vec3 u = displacement(analysis, static_cast<int>(i));
+    out << fmt::format("{:.9g} {:.9g} {:.9g}\n", u.x(), u.y(), u.z());
+  }
+  out << "</DataArray>\n<DataArray type=\"Float64\" Name=\"rotation_vector\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  for (std::size_t i = 0; i < points; ++i) {
+    const Vec3 r = rotation(analysis, static_cast<int>(i));
+    out << fmt::format("{:.9g} {:.9g} {:.9g}\n", r.x(), r.y(), r.z());
+  }
+  out << "</DataArray>\n<DataArray type=\"Int32\" Name=\"wire\" format=\"ascii\">\n";
+  for (const MeshNode& n : mesh.nodes) out << n.wire << "\n";
+  out << "</DataArray>\n<DataArray type=\"Int32\" Name=\"layer\" format=\"ascii\">\n";
+  for (const MeshNode& n : mesh.nodes) out << n.layer << "\n";
+  out << "</DataArray>\n</PointData>\n<CellData>\n";
+  // Each quadratic element is written as two straight cells carrying its two integration points' results.
+  const char* names[6] = {"axial_force_N", "shear_force_2_N", "shear_force_3_N", "torsion_Nmm", "bending_moment_2_Nmm", "bending_moment_3_Nmm"};
+  for (int c = 0; c < 6; ++c) {
+    out << "<DataArray type=\"Float64\" Name=\"" << names[c] << "\" format=\"ascii\">\n";
+    for (const BeamElement& e : model.elements)
+      out << fmt::format("{:.9g}\n{:.9g}\n", e.points()[0].resultants[c], e.points()[1].resultants[c]);
+    out << "</DataArray>\n";
+  }
+  out << "<DataArray type=\"Float64\" Name=\"axial_strain\" format=\"ascii\">\n";
+  for (const BeamElement& e : model.elements)
+    out << fmt::format("{:.9g}\n{:.9g}\n", e.points()[0].strain[0], e.points()[1].strain[0]);
+  out << "</DataArray>\n</CellData>\n<Cells>\n<DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">\n";
+  for (const MeshElement& e : mesh.elements) out << e.nodes[0] << " " << e.nodes[1] << "\n" << e.nodes[1] << " " << e.nodes[2] << "\n";
+  out << "</DataArray>\n<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">\n";
+  for (std::size_t i = 1; i <= cells; ++i) out << 2 * i << "\n";
+  out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+  for (std::size_t i = 0; i < cells; ++i) out << "3\n";  // VTK_LINE
+  out << "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+  frames_.emplace_back(time, name);
+  write_pvd();
+}
+
+void ResultWriter::write_pvd() const {
+  std::ofstream out(directory_ / "result.pvd");
+  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
+  for (const auto& [time, file] : frames_)
+    out << "<DataSet timestep=\"" << fmt::format("{:.9g}", time) << "\" file=\"" << file << "\"/>\n";
+  out << "</Collection>\n</VTKFile>\n";
+}
+
+void ResultWriter::finish(const StaticAnalysis& analysis, const AnalysisStatus& status, double wall_seconds,
+                          const nlohmann::json& model_info) {
+  if (case_.output.vtu && !last_written_ && increments_seen_ > 0)
+    write_vtu(analysis, rows_.empty() ? 0.0 : rows_.back().load_factor);
+  std::ofstream d(directory_ / "displacements.csv");
+  d << "node,wire,layer,x0,y0,z0,ux,uy,uz,rx,ry,rz\n";
+  const Mesh& mesh = analysis.model().mesh;
+  for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
+    const MeshNode& n = mesh.nodes[i];
+    const Vec3 u = displacement(analysis, static_cast<int>(i)), r = rotation(analysis, static_cast<int>(i));
+    d << fmt::format("{},{},{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}\n", i, n.wire,
+                     n.layer, n.reference.position.x(), n.reference.position.y(), n.reference.position.z(), u.x(), u.y(),
+                     u.z(), r.x(), r.y(), r.z());
+  }
+  nlohmann::json summary = model_info;
+  summary["status"] = status.converged ? "converged" : "not_converged";
+  if (!status.converged) summary["message"] = status.message;
+  summary["wall_time_s"] = wall_seconds;
+  summary["converged_increments"] = rows_.size();
+  summary["linear_solver"] = analysis.linear_solver_name();
+  summary["configuration"] = case_.resolved;
+  std::ofstream(directory_ / "summary.json") << summary.dump(2) << "\n";
+}
+
+}  // namespace strandfem

@@ -1,0 +1,50 @@
+// Writes a run's results folder: history.csv, displacements.csv, summary.json, result.pvd + .vtu files.
+#pragma once
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "strandfem/io/case_file.hpp"
+#include "strandfem/solver/static_analysis.hpp"
+
+namespace strandfem {
+
+// One row of history.csv, derived from a converged state.
+struct HistoryRow {
+  int step = 0, increment = 0;
+  double load_factor = 0, axial_strain = 0, axial_force = 0, torque = 0, end_rotation = 0;
+  double transverse_load = 0, midspan_deflection = 0;
+  Vec3 monitor_displacement = Vec3::Zero();
+  int iterations = 0;
+  double residual_norm = 0;
+};
+
+HistoryRow history_row(const CaseDefinition& c, const StaticAnalysis& analysis, const IncrementReport& report);
+
+class ResultWriter {
+ public:
+  ResultWriter(std::filesystem::path directory, const CaseDefinition& c);
+  // Appends the history row (flushed, so a failed run keeps what converged) and, every n-th
+  // increment, a ParaView file.
+  void on_increment(const StaticAnalysis& analysis, const IncrementReport& report);
+  // Final displacements, the last ParaView frame (if not written yet) and summary.json.
+  void finish(const StaticAnalysis& analysis, const AnalysisStatus& status, double wall_seconds,
+              const nlohmann::json& model_info);
+  const std::vector<HistoryRow>& rows() const { return rows_; }
+
+ private:
+  void write_vtu(const StaticAnalysis& analysis, double time);
+  void write_pvd() const;
+
+  std::filesystem::path directory_;
+  const CaseDefinition& case_;
+  std::ofstream history_;
+  std::vector<HistoryRow> rows_;
+  std::vector<std::pair<double, std::string>> frames_;
+  int increments_seen_ = 0;
+  bool last_written_ = false;
+};
+
+}  // namespace strandfem
