@@ -22,7 +22,7 @@ nlohmann::json build_info() {
   return {{"git_revision", STRANDFEM_GIT_REVISION}, {"compiler", __VERSION__}, {"version", "0.1.0"}};
 }
 
-int run_case(const std::string& case_path, const std::string& output_dir, int threads, bool quiet) {
+int run_case(const std::string& case_path, const std::string& output_dir, int threads, bool quiet, bool verbose) {
   strandfem::CaseDefinition c = strandfem::load_case(case_path);
   if (threads > 0) c.model.options.threads = threads;
   for (const auto& w : c.warnings) std::cerr << "warning: " << w << "\n";
@@ -39,7 +39,12 @@ int run_case(const std::string& case_path, const std::string& output_dir, int th
                 << " (fraction " << r.step_fraction << "): " << r.iterations << " iterations, residual "
                 << r.residual_norm << "\n";
   };
-  const strandfem::AnalysisStatus status = analysis.run(on_increment);
+  auto on_progress = [&](const strandfem::IncrementReport& r) {
+    std::cerr << "  step " << r.step + 1 << " increment " << r.increment << " iteration " << r.iterations
+              << ": relative residual " << r.residual_norm << "\n";
+  };
+  const strandfem::AnalysisStatus status =
+      verbose ? analysis.run(on_increment, on_progress) : analysis.run(on_increment);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   writer.finish(analysis, status, wall, info);
   if (!status.converged) {
@@ -57,12 +62,13 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   std::string case_path, output_dir = "results";
   int threads = 0;
-  bool quiet = false;
+  bool quiet = false, verbose = false;
   auto* run = app.add_subcommand("run", "Solve a case and write its results folder");
   run->add_option("case", case_path, "Case file (YAML)")->required();
   run->add_option("-o,--output", output_dir, "Results folder (created if needed)");
   run->add_option("-t,--threads", threads, "OpenMP threads for element evaluation (0: default)")->check(CLI::NonNegativeNumber);
   run->add_flag("-q,--quiet", quiet, "No progress lines");
+  run->add_flag("-v,--verbose", verbose, "A progress line per Newton iteration");
   auto* info = app.add_subcommand("info", "Print model sizes and analytic references as JSON, without solving");
   info->add_option("case", case_path, "Case file (YAML)")->required();
   try {
@@ -78,7 +84,7 @@ int main(int argc, char** argv) {
       std::cout << strandfem::model_report(c).dump(2) << "\n";
       return 0;
     }
-    return run_case(case_path, output_dir, threads, quiet);
+    return run_case(case_path, output_dir, threads, quiet, verbose);
   } catch (const strandfem::CaseError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return kExitBadInput;

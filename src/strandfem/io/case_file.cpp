@@ -20,8 +20,8 @@ class CaseParser {
   CaseParser(const std::string& path, CaseDefinition& out) : reader_(path), out_(out) {}
 
   void parse(const YAML::Node& root) {
-    reader_.check_keys(root, "", {"title", "description", "materials", "strand", "beams", "mesh", "supports", "steps",
-                                  "solver", "output", "expected"});
+    reader_.check_keys(root, "", {"title", "description", "materials", "strand", "beams", "mesh", "supports", "hubs",
+                                  "steps", "solver", "output", "expected"});
     out_.title = root["title"] ? reader_.text(root["title"], "title") : "untitled";
     parse_materials(reader_.require(root, "", "materials"));
     const bool has_strand = root["strand"].IsDefined(), has_beams = root["beams"].IsDefined();
@@ -30,7 +30,9 @@ class CaseParser {
     else {
       if (root["mesh"]) reader_.fail(root["mesh"], "mesh", "only strands take 'mesh'; beams set 'elements' per line");
       parse_beams(root["beams"]);
+      if (root["hubs"]) parse_hubs(root["hubs"]);
     }
+    if (has_strand && root["hubs"]) reader_.fail(root["hubs"], "hubs", "strands have their rigid end planes built in");
     if (root["supports"]) parse_supports(root["supports"]);
     parse_steps(reader_.require(root, "", "steps"));
     if (root["solver"]) parse_solver(root["solver"]);
@@ -173,6 +175,32 @@ class CaseParser {
     out_.monitor_node = first.nodes.back();
   }
 
+  // Hubs: standalone nodes (rigid plates) to which beam nodes are tied by exact rigid-body kinematics.
+  void parse_hubs(const YAML::Node& node) {
+    if (!node.IsSequence()) reader_.fail(node, "hubs", "expected a list of {name, position, links}");
+    Mesh& m = out_.model.mesh;
+    for (std::size_t i = 0; i < node.size(); ++i) {
+      const std::string path = at("hubs", i);
+      reader_.check_keys(node[i], path, {"name", "position", "links"});
+      const std::string name = reader_.text(reader_.require(node[i], path, "name"), path + ".name");
+      if (hubs_.count(name)) reader_.fail(node[i]["name"], path + ".name", "duplicate hub name '" + name + "'");
+      const auto p = reader_.numbers(reader_.require(node[i], path, "position"), path + ".position", 3);
+      MeshNode hub;
+      hub.reference.position = Vec3(p[0], p[1], p[2]);
+      const int hub_node = static_cast<int>(m.nodes.size());
+      m.nodes.push_back(hub);
+      hubs_[name] = hub_node;
+      const YAML::Node links = reader_.require(node[i], path, "links");
+      if (!links.IsSequence() || links.size() == 0) reader_.fail(links, path + ".links", "expected a list of beam node selectors");
+      for (std::size_t k = 0; k < links.size(); ++k) {
+        const int slave = node_at(links[k], at(path + ".links", k));
+        for (const RigidTie& t : out_.model.ties)
+          if (t.slave == slave) reader_.fail(links[k], at(path + ".links", k), "node already linked to a hub");
+        out_.model.ties.push_back(make_rigid_tie(slave, hub_node, m.nodes[slave].reference, m.nodes[hub_node].reference));
+      }
+    }
+  }
+
   void parse_shape(const YAML::Node& s, const std::string& path, BeamLineSpec& line) {
     const std::string type = reader_.choice(reader_.require(s, path, "type"), path + ".type", {"straight", "arc", "helix"});
     auto vec = [&](const char* key) {
@@ -223,7 +251,13 @@ class CaseParser {
         if (std::abs(m.nodes[node].reference.position.z() - z) < std::abs(m.nodes[best].reference.position.z() - z)) best = node;
       return best;
     }
-    reader_.check_keys(n, path, {"beam", "point", "node"});
+    reader_.check_keys(n, path, {"beam", "point", "node", "hub"});
+    if (n["hub"]) {
+      const std::string hub = reader_.text(n["hub"], path + ".hub");
+      if (!hubs_.count(hub)) reader_.fail(n["hub"], path + ".hub", "no hub named '" + hub + "'");
+      if (n.size() != 1) reader_.fail(n, path, "a hub selector takes only 'hub'");
+      return hubs_.at(hub);
+    }
     const std::string name = reader_.text(reader_.require(n, path, "beam"), path + ".beam");
     for (const MeshWire& w : m.wires) {
       if (w.name != name) continue;
@@ -362,6 +396,7 @@ class CaseParser {
   YamlReader reader_;
   CaseDefinition& out_;
   std::map<std::string, ElasticMaterial> materials_;
+  std::map<std::string, int> hubs_;
 };
 
 }  // namespace

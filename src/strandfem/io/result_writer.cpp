@@ -42,7 +42,11 @@ HistoryRow history_row(const CaseDefinition& c, const StaticAnalysis& analysis, 
     row.end_rotation = rotation(analysis, end).z();
     row.transverse_load = std::hypot(applied.x(), applied.y());
     row.midspan_deflection = std::hypot(row.monitor_displacement.x(), row.monitor_displacement.y());
-  } else {
+  } else if (c.monitor_node >= 0) {
+    // Beam lines: the monitor node's axial (z) force, moment about z and rotation about z.
+    row.axial_force = f[6 * c.monitor_node + 2];
+    row.torque = f[6 * c.monitor_node + 5];
+    row.end_rotation = rotation(analysis, c.monitor_node).z();
     row.transverse_load = applied.norm();
     row.midspan_deflection = row.monitor_displacement.norm();
   }

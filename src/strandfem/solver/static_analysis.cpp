@@ -74,8 +74,10 @@ bool StaticAnalysis::solve_increment(double step_fraction,
         (c < 3 ? free_force2 : free_moment2) += residual * residual;
       }
     }
-    const double force_ref = std::max(std::sqrt(ref_force2), force_floor_);
-    const double moment_ref = std::max({std::sqrt(ref_moment2), force_ref * length_scale_});
+    // Each reference borrows from the other through the mean element length, so that a case loaded
+    // only by moments (or only by forces) still has a meaningful scale for both residuals.
+    const double force_ref = std::max({std::sqrt(ref_force2), std::sqrt(ref_moment2) / length_scale_, force_floor_});
+    const double moment_ref = force_ref * length_scale_ > std::sqrt(ref_moment2) ? force_ref * length_scale_ : std::sqrt(ref_moment2);
     const double relative = std::max(std::sqrt(free_force2) / force_ref, std::sqrt(free_moment2) / moment_ref);
     report.residual_history.push_back(relative);
     report.residual_norm = relative;
