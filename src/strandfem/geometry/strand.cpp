@@ -47,10 +47,10 @@ CenterlinePoint helix_point(double radius, double lay_angle, int direction, doub
   return p;
 }
 
-double lateral_clearance(const StrandSpec& strand, int layer) {
-  const LayerSpec& spec = strand.layers[layer];
-  if (layer == 0 || spec.wires < 2) return std::numeric_limits<double>::quiet_NaN();
-  const double R = layer_radius(strand, layer);
+namespace {
+
+// Smallest centerline distance between neighbouring wires of a layer laid at radius R, minus a diameter.
+double clearance_at_radius(const LayerSpec& spec, double R) {
   const double k = spec.lay_direction * std::tan(spec.lay_angle) / R;
   const double phi0 = 2.0 * std::numbers::pi / spec.wires;
   // Squared distance from wire 0 at z = 0 to wire 1 at height z.
@@ -72,6 +72,27 @@ double lateral_clearance(const StrandSpec& strand, int layer) {
     if (distance2(z1) < distance2(z2)) hi = z2; else lo = z1;
   }
   return std::sqrt(distance2(0.5 * (lo + hi))) - spec.wire_diameter;
+}
+
+}  // namespace
+
+double lateral_clearance(const StrandSpec& strand, int layer) {
+  const LayerSpec& spec = strand.layers[layer];
+  if (layer == 0 || spec.wires < 2) return std::numeric_limits<double>::quiet_NaN();
+  return clearance_at_radius(spec, layer_radius(strand, layer));
+}
+
+double touching_layer_radius(const StrandSpec& strand, int layer) {
+  const LayerSpec& spec = strand.layers[layer];
+  if (layer == 0 || spec.wires < 2) return std::numeric_limits<double>::quiet_NaN();
+  // Clearance grows with the radius: bisect between a radius with overlap and one with a gap.
+  double lo = 0.5 * spec.wire_diameter, hi = layer_radius(strand, layer);
+  while (clearance_at_radius(spec, hi) < 0) hi *= 1.5;
+  for (int it = 0; it < 80; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (clearance_at_radius(spec, mid) < 0 ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
 }
 
 }  // namespace strandfem

@@ -47,4 +47,9 @@ CenterlinePoint helix_point(double radius, double lay_angle, int direction, doub
 // negative values are overlaps of the nominal geometry. NaN for the core and single-wire layers.
 double lateral_clearance(const StrandSpec& strand, int layer);
 
+// Layer radius at which neighbouring wires of the layer would just touch (exact helix distance). Its
+// excess over layer_radius() is the overlap "in radius" that strand data sheets quote (120-wire strand,
+// layer 2: about 0.19 mm). NaN for the core and single-wire layers.
+double touching_layer_radius(const StrandSpec& strand, int layer);
+
 }  // namespace strandfem

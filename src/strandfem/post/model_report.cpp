@@ -38,6 +38,9 @@ nlohmann::json model_report(const CaseDefinition& c) {
                       {"lay_direction", i == 0 ? "none" : (l.lay_direction > 0 ? "right" : "left")},
                       {"layer_radius_mm", layer_radius(s, static_cast<int>(i))},
                       {"lateral_clearance_mm", std::isnan(clearance) ? nlohmann::json(nullptr) : nlohmann::json(clearance)},
+                      {"radial_overlap_mm", std::isnan(clearance) ? nlohmann::json(nullptr)
+                                                                  : nlohmann::json(touching_layer_radius(s, static_cast<int>(i)) -
+                                                                                   layer_radius(s, static_cast<int>(i)))},
                       {"elements_per_wire", first ? first->elements.size() : 0}});
   }
   j["layers"] = layers;
