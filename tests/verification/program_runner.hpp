@@ -1,0 +1,62 @@
+// Runs the strandfem program on a case and reads its results (verification tests go through the program).
+#pragma once
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace strandfem::verification {
+
+struct ProgramRun {
+  int exit_code = -1;
+  std::string stderr_text;
+  std::filesystem::path output;
+};
+
+inline std::string case_path(const std::string& relative) { return std::string(STRANDFEM_SOURCE_DIR) + "/" + relative; }
+
+inline ProgramRun run_program(const std::string& arguments, const std::string& tag) {
+  ProgramRun r;
+  r.output = std::filesystem::path(::testing::TempDir()) / ("strandfem_" + tag);
+  std::filesystem::remove_all(r.output);
+  std::filesystem::create_directories(r.output);
+  const std::string err = (r.output / "stderr.txt").string();
+  const std::string command = std::string(STRANDFEM_BINARY) + " " + arguments + " > " + (r.output / "stdout.txt").string() + " 2> " + err;
+  const int status = std::system(command.c_str());
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream in(err);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  r.stderr_text = ss.str();
+  return r;
+}
+
+inline ProgramRun run_case(const std::string& case_file, const std::string& tag, const std::string& extra = "") {
+  // run_program() empties the folder strandfem_<tag>; the program writes its results folder inside it.
+  const auto results = std::filesystem::path(::testing::TempDir()) / ("strandfem_" + tag) / "results";
+  return run_program("run " + case_path(case_file) + " -q -o " + results.string() + " " + extra, tag);
+}
+
+// CSV as a list of rows keyed by column name.
+inline std::vector<std::map<std::string, double>> read_csv(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::string line;
+  std::vector<std::string> names;
+  std::vector<std::map<std::string, double>> rows;
+  if (!std::getline(in, line)) return rows;
+  std::stringstream header(line);
+  for (std::string name; std::getline(header, name, ',');) names.push_back(name);
+  while (std::getline(in, line)) {
+    std::stringstream fields(line);
+    std::map<std::string, double> row;
+    std::size_t k = 0;
+    for (std::string v; std::getline(fields, v, ',') && k < names.size(); ++k) row[names[k]] = std::stod(v);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+}  // namespace strandfem::verification

@@ -1,0 +1,134 @@
+// Requirement: the program runs a strand with no contact through 1 % axial strain, writes every output,
+// gives the same numbers for any thread count, reports model sizes, rejects bad input with exit code 2
+// and a message naming the key, and stops with exit code 3 keeping converged results.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "program_runner.hpp"
+#include "strandfem/io/case_file.hpp"
+#include "strandfem/solver/static_analysis.hpp"
+
+namespace strandfem::verification {
+namespace {
+
+TEST(StrandProgram, SevenWireWithoutContactWritesAllOutputsAndIsThreadIndependent) {
+  const ProgramRun one = run_case("cases/examples/seven_wire_axial.yaml", "seven_t1", "-t 1");
+  const ProgramRun two = run_case("cases/examples/seven_wire_axial.yaml", "seven_t2", "-t 2");
+  ASSERT_EQ(one.exit_code, 0) << one.stderr_text;
+  ASSERT_EQ(two.exit_code, 0) << two.stderr_text;
+  for (const char* f : {"history.csv", "displacements.csv", "summary.json", "result.pvd", "result_00000.vtu"})
+    EXPECT_TRUE(std::filesystem::exists(one.output / "results" / f)) << f;
+  const auto h1 = read_csv(one.output / "results" / "history.csv"), h2 = read_csv(two.output / "results" / "history.csv");
+  ASSERT_EQ(h1.size(), 10u);
+  ASSERT_EQ(h1.size(), h2.size());
+  EXPECT_NEAR(h1.back().at("axial_strain"), 0.01, 1e-12);
+  EXPECT_GT(h1.back().at("axial_force_N"), 0.0);
+  for (std::size_t i = 0; i < h1.size(); ++i)
+    for (const auto& [key, value] : h1[i]) EXPECT_NEAR(value, h2[i].at(key), 1e-9 * (1 + std::abs(value))) << key;
+  const auto d = read_csv(one.output / "results" / "displacements.csv");
+  EXPECT_EQ(d.size(), 343u);
+  const nlohmann::json summary = nlohmann::json::parse(std::ifstream(one.output / "results" / "summary.json"));
+  EXPECT_EQ(summary["status"], "converged");
+  EXPECT_EQ(summary["nodes"], 343);
+  EXPECT_EQ(summary["elements"], 168);
+  EXPECT_GT(summary["dofs"].get<int>(), 0);
+  EXPECT_TRUE(summary.contains("EI_max_Nm2") && summary.contains("axial_stiffness_N") && summary.contains("wall_time_s"));
+  // Without contact the core carries the load and the helical wires act as springs: the force lies
+  // between the core alone (E A_core eps) and the linear strand theory (C11 eps).
+  const double core = 188000 * M_PI * 3.94 * 3.94 / 4 * 0.01;
+  EXPECT_GT(h1.back().at("axial_force_N"), core);
+  EXPECT_LT(h1.back().at("axial_force_N"), summary["axial_stiffness_N"]["fixed_ends"].get<double>() * 0.01);
+}
+
+TEST(StrandProgram, InfoReportsPaperMeshSizesAndReferences) {
+  const ProgramRun r = run_program("info " + case_path("cases/paper/wire_120.yaml"), "info120");
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  const nlohmann::json j = nlohmann::json::parse(std::ifstream(r.output / "stdout.txt"));
+  EXPECT_EQ(j["elements"], 2640);
+  EXPECT_EQ(j["nodes"], 5400);
+  EXPECT_NEAR(j["layers"][2]["radial_overlap_mm"].get<double>(), 0.19, 0.01);
+  EXPECT_NE(r.stderr_text.find("warning: layer 2"), std::string::npos);
+  const ProgramRun c = run_program("info " + case_path("cases/paper/cardinal.yaml"), "infocardinal");
+  const nlohmann::json k = nlohmann::json::parse(std::ifstream(c.output / "stdout.txt"));
+  EXPECT_NEAR(k["EI_max_Nm2"].get<double>(), 1800.4, 1.8);
+  EXPECT_NEAR(k["EI_min_Nm2"].get<double>(), 28.3, 0.03);
+}
+
+struct BadInput {
+  const char* name;
+  const char* replace;  // text of the 7-wire case to replace...
+  const char* with;     // ...by this
+  const char* key;      // the message must name this key
+};
+
+TEST(StrandProgram, BadInputGivesExitCode2NamingTheKey) {
+  const BadInput cases[] = {
+      {"negative_diameter", "diameter: 3.73", "diameter: -3.73", "strand.layers[1].diameter"},
+      {"lay_angle_90", "lay_angle: 11.8", "lay_angle: 90", "strand.layers[1].lay_angle"},
+      {"zero_wires", "wires: 6", "wires: 0", "strand.layers[1].wires"},
+      {"unknown_key", "ends: fixed", "ends: fixed\n  colour: red", "strand.colour"},
+      {"big_overlap", "wires: 6", "wires: 9", "strand.layers[1]"},
+      {"bad_end", "ends: fixed", "ends: glued", "strand.ends"},
+      {"bad_solver", "steps:", "solver: {linear_solver: magic}\nsteps:", "solver.linear_solver"},
+      {"missing_length", "length: 200", "", "strand.length"},
+  };
+  std::ifstream in(case_path("cases/examples/seven_wire_axial.yaml"));
+  const std::string base((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (const BadInput& c : cases) {
+    std::string text = base;
+    const auto pos = text.find(c.replace);
+    ASSERT_NE(pos, std::string::npos) << c.name;
+    text.replace(pos, std::string(c.replace).size(), c.with);
+    const std::string file = ::testing::TempDir() + "/bad_" + c.name + ".yaml";
+    std::ofstream(file) << text;
+    const ProgramRun r = run_program("run " + file + " -q -o " + ::testing::TempDir() + "/bad_out", std::string("bad_") + c.name);
+    EXPECT_EQ(r.exit_code, 2) << c.name << ": " << r.stderr_text;
+    EXPECT_NE(r.stderr_text.find(c.key), std::string::npos) << c.name << ": " << r.stderr_text;
+  }
+  EXPECT_EQ(run_program("run /nonexistent.yaml -q", "bad_missing_file").exit_code, 2);
+}
+
+TEST(StrandProgram, NonConvergenceGivesExitCode3AndKeepsConvergedIncrements) {
+  std::ifstream in(case_path("cases/verification/straight_wire_axial_torque.yaml"));
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // A moment that rolls the wire up twice in one increment, with one Newton iteration and no cut-back.
+  text.replace(text.find("moment: [0, 0, 2000]"), 20, "moment: [0, 0, 9.0e7]");
+  text.replace(text.find("solver: {"), 9, "solver: {max_iterations: 3, max_cutbacks: 1, ");
+  const std::string file = ::testing::TempDir() + "/diverging.yaml";
+  std::ofstream(file) << text;
+  const std::string out = ::testing::TempDir() + "/diverging_out";
+  const ProgramRun r = run_program("run " + file + " -q -o " + out, "diverging");
+  EXPECT_EQ(r.exit_code, 3) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("did not converge"), std::string::npos);
+  EXPECT_EQ(read_csv(std::filesystem::path(out) / "history.csv").size(), 2u);  // the pull step converged
+  const nlohmann::json summary = nlohmann::json::parse(std::ifstream(std::filesystem::path(out) / "summary.json"));
+  EXPECT_EQ(summary["status"], "not_converged");
+}
+
+TEST(NewtonConvergence, ResidualDecreasesQuadratically) {
+  CaseDefinition c = load_case(case_path("cases/verification/cantilever_roll_up.yaml"));
+  StaticAnalysis analysis(c.model);
+  std::vector<std::vector<double>> histories;
+  ASSERT_TRUE(analysis.run([&](const IncrementReport& r) { histories.push_back(r.residual_history); }).converged);
+  int checked = 0;
+  for (const auto& h : histories) {
+    EXPECT_LE(h.size(), 9u);
+    // Order of convergence from the last three residuals r1 > r2 > r3 of each increment:
+    // p = log(r3 / r2) / log(r2 / r1) is 2 for Newton with a consistent tangent, 1 for a wrong one.
+    // Taken where the residual first drops below 1e-8, above the round-off floor (~1e-11).
+    std::size_t j = 2;
+    while (j < h.size() && h[j] >= 1e-8) ++j;
+    if (j >= h.size()) continue;
+    const double r1 = h[j - 2], r2 = h[j - 1], r3 = h[j];
+    const double order = std::log(r3 / r2) / std::log(r2 / r1);
+    EXPECT_GT(order, 1.8) << "residuals " << r1 << ", " << r2 << ", " << r3;
+    ++checked;
+  }
+  EXPECT_GE(checked, 15);
+}
+
+}  // namespace
+}  // namespace strandfem::verification
