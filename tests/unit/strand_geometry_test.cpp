@@ -67,6 +67,15 @@ TEST(StrandGeometryTest, CenterlineIsHelixWithLayAngleAndOrthonormalFrame) {
   EXPECT_EQ(s.layers[1].lay_direction, -1);
 }
 
+TEST(StrandGeometryTest, PerWireStartAnglesOverrideEvenSpacing) {
+  StrandSpec s = cardinal();
+  const CenterlinePoint even = wire_centerline(s, 1, 2, 0.0);
+  EXPECT_NEAR(std::atan2(even.position.y(), even.position.x()), 120.0 * kDeg, 1e-12);
+  s.layers[1].wire_start_angles = {0, 10 * kDeg, 100 * kDeg, 180 * kDeg, 240 * kDeg, 300 * kDeg};
+  const CenterlinePoint custom = wire_centerline(s, 1, 2, 0.0);
+  EXPECT_NEAR(std::atan2(custom.position.y(), custom.position.x()), 100.0 * kDeg, 1e-12);
+}
+
 TEST(StrandGeometryTest, ReportsTheNominalOverlapsNamedInTheIssue) {
   // 120-wire strand, second layer: about 0.19 mm of overlap; Cardinal steel layer: about 0.01 mm
   // (in layer radius: the touching radius exceeds eq. 2.1's). The centerline clearance is negative there.

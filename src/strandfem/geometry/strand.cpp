@@ -29,8 +29,10 @@ CenterlinePoint wire_centerline(const StrandSpec& strand, int layer, int wire_in
     return p;
   }
   const LayerSpec& spec = strand.layers[layer];
-  return helix_point(layer_radius(strand, layer), spec.lay_angle, spec.lay_direction,
-                     spec.start_angle + 2.0 * std::numbers::pi * wire_in_layer / spec.wires, z);
+  const double start = spec.wire_start_angles.empty()
+                            ? spec.start_angle + 2.0 * std::numbers::pi * wire_in_layer / spec.wires
+                            : spec.wire_start_angles[wire_in_layer];
+  return helix_point(layer_radius(strand, layer), spec.lay_angle, spec.lay_direction, start, z);
 }
 
 CenterlinePoint helix_point(double radius, double lay_angle, int direction, double start_angle, double z) {

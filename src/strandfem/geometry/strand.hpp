@@ -17,6 +17,8 @@ struct LayerSpec {
   double lay_angle = 0;       // rad, between the wire tangent and the strand axis
   int lay_direction = 1;      // +1 right-hand lay, -1 left-hand lay
   double start_angle = 0;     // rad, angular position gamma of the layer's first wire at z = 0
+  // Optional per-wire angular positions at z = 0 (rad); when empty, wires are evenly spaced from start_angle.
+  std::vector<double> wire_start_angles;
 };
 
 struct StrandSpec {

@@ -78,7 +78,7 @@ class CaseParser {
     for (std::size_t i = 0; i < layers.size(); ++i) {
       const YAML::Node l = layers[i];
       const std::string path = at("strand.layers", i);
-      reader_.check_keys(l, path, {"wires", "diameter", "material", "lay_angle", "lay_direction", "start_angle"});
+      reader_.check_keys(l, path, {"wires", "diameter", "material", "lay_angle", "lay_direction", "start_angle", "start_angles"});
       LayerSpec layer;
       layer.wires = reader_.integer(reader_.require(l, path, "wires"), path + ".wires", 1);
       layer.wire_diameter = reader_.positive(reader_.require(l, path, "diameter"), path + ".diameter", "mm");
@@ -95,7 +95,11 @@ class CaseParser {
         if (l["lay_direction"])
           layer.lay_direction = reader_.choice(l["lay_direction"], path + ".lay_direction", {"right", "left"}) == "right" ? 1 : -1;
       }
+      if (l["start_angle"] && l["start_angles"]) reader_.fail(l, path, "give start_angle or start_angles, not both");
       if (l["start_angle"]) layer.start_angle = reader_.number(l["start_angle"], path + ".start_angle") * kDegree;
+      if (l["start_angles"])
+        for (double a : reader_.numbers(l["start_angles"], path + ".start_angles", static_cast<std::size_t>(layer.wires)))
+          layer.wire_start_angles.push_back(a * kDegree);
       spec.layers.push_back(layer);
     }
     // Nominal overlaps: warn for small ones (real strands have them), refuse large ones.
