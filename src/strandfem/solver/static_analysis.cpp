@@ -58,7 +58,8 @@ bool StaticAnalysis::solve_increment(double step_fraction,
   double increment_displacement2 = 0;
   last_correction2_ = 0;
   for (int iteration = 0; iteration <= opt.max_iterations; ++iteration) {
-    assembler_->assemble(model_, state_, internal_forces_, &values_);
+    // Residual first: the (costly) tangent is only assembled when another correction is needed.
+    assembler_->assemble(model_, state_, internal_forces_, nullptr);
     double free_force2 = 0, free_moment2 = 0, ref_force2 = 0, ref_moment2 = 0;
     for (std::size_t node = 0; node < node_count; ++node) {
       if (dofs_.tie_of[node] >= 0) continue;
@@ -77,7 +78,7 @@ bool StaticAnalysis::solve_increment(double step_fraction,
     // Each reference borrows from the other through the mean element length, so that a case loaded
     // only by moments (or only by forces) still has a meaningful scale for both residuals.
     const double force_ref = std::max({std::sqrt(ref_force2), std::sqrt(ref_moment2) / length_scale_, force_floor_});
-    const double moment_ref = force_ref * length_scale_ > std::sqrt(ref_moment2) ? force_ref * length_scale_ : std::sqrt(ref_moment2);
+    const double moment_ref = std::max(std::sqrt(ref_moment2), force_ref * length_scale_);
     const double relative = std::max(std::sqrt(free_force2) / force_ref, std::sqrt(free_moment2) / moment_ref);
     report.residual_history.push_back(relative);
     report.residual_norm = relative;
@@ -92,6 +93,7 @@ bool StaticAnalysis::solve_increment(double step_fraction,
                                                                 opt.displacement_tolerance * increment_displacement2))
       return true;
     if (iteration == opt.max_iterations) return false;
+    assembler_->assemble(model_, state_, internal_forces_, &values_);
     try {
       solver_->factorize(values_);
       solver_->solve(rhs);
