@@ -1,6 +1,7 @@
 // Beam cross-section response: stress resultants and their tangent from generalized strains.
 #pragma once
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "strandfem/core/types.hpp"
@@ -24,6 +25,7 @@ struct ElasticMaterial {
   double youngs_modulus = 0;  // MPa
   double poisson_ratio = 0;
   double density = 0;         // t/mm^3 (1 t/mm^3 = 1e12 kg/m^3), used only for mass per length
+  std::string name;           // the case file's material key (friction is given per material pair)
   double shear_modulus() const { return youngs_modulus / (2.0 * (1.0 + poisson_ratio)); }
 };
 

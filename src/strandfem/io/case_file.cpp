@@ -51,6 +51,7 @@ class CaseParser {
       const std::string name = entry.first.as<std::string>(), path = "materials." + name;
       reader_.check_keys(entry.second, path, {"E", "nu", "density"});
       ElasticMaterial m;
+      m.name = name;
       m.youngs_modulus = reader_.positive(reader_.require(entry.second, path, "E"), path + ".E", "MPa");
       m.poisson_ratio = reader_.number(reader_.require(entry.second, path, "nu"), path + ".nu");
       if (!(m.poisson_ratio > -1.0 && m.poisson_ratio < 0.5))

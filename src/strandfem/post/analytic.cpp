@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 namespace strandfem {
 namespace {
@@ -67,6 +69,25 @@ StrandProperties strand_properties(const StrandSpec& strand) {
     p.axial_stiffness_sum += layer.wires * m.youngs_modulus * area;
   }
   return p;
+}
+
+double radial_contact_count_eq24(const StrandSpec& strand, int layer) {
+  if (layer < 2 || layer >= static_cast<int>(strand.layers.size()))
+    throw std::invalid_argument("radial_contact_count_eq24: layer must be in 2.." + std::to_string(strand.layers.size() - 1));
+  const LayerSpec &outer = strand.layers[layer], &inner = strand.layers[layer - 1];
+  const double contact_radius = layer_radius(strand, layer) - 0.5 * outer.wire_diameter;
+  const double spacing = 2.0 * M_PI * contact_radius * std::cos(inner.lay_angle) /
+                         (inner.wires * std::sin(outer.lay_angle + inner.lay_angle));
+  return outer.wires * strand.length / (spacing * std::cos(outer.lay_angle));
+}
+
+double radial_contact_count_helix(const StrandSpec& strand, int layer) {
+  if (layer < 2 || layer >= static_cast<int>(strand.layers.size()))
+    throw std::invalid_argument("radial_contact_count_helix: layer must be in 2.." + std::to_string(strand.layers.size() - 1));
+  const LayerSpec &outer = strand.layers[layer], &inner = strand.layers[layer - 1];
+  const double rate_outer = outer.lay_direction * std::tan(outer.lay_angle) / layer_radius(strand, layer);
+  const double rate_inner = inner.lay_direction * std::tan(inner.lay_angle) / layer_radius(strand, layer - 1);
+  return outer.wires * inner.wires * strand.length * std::abs(rate_outer - rate_inner) / (2.0 * M_PI);
 }
 
 }  // namespace strandfem

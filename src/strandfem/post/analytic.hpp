@@ -38,4 +38,15 @@ struct StrandProperties {
 };
 StrandProperties strand_properties(const StrandSpec& strand);
 
+// Radial (crossing) contacts between layer `layer` and layer `layer - 1` over the strand length predicted by
+// the paper's eq. 2.4: along a wire of layer i, crossings with layer i-1 recur every
+// x = 2 pi R_ct cos(a_{i-1}) / (n_{i-1} sin(a_i + a_{i-1})), R_ct = R_i - d_i / 2 (opposite lay directions).
+// Returns n_i L / (x cos a_i); requires layer >= 2 (the core has no crossings).
+double radial_contact_count_eq24(const StrandSpec& strand, int layer);
+
+// The same count from the helices' actual angular rates tan(a)/R at their own layer radii (eq. 2.4 puts
+// both helices on R_ct): n_i n_{i-1} L |tan a_i / R_i - s tan a_{i-1} / R_{i-1}| / (2 pi), s = +1 for the
+// same lay direction, -1 for opposite.
+double radial_contact_count_helix(const StrandSpec& strand, int layer);
+
 }  // namespace strandfem

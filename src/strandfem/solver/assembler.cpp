@@ -13,14 +13,21 @@ Assembler::Assembler(const Model& model, const DofMap& dofs) : dofs_(dofs) {
     return dofs.equation[dofs.master_of(model, node)][component];
   };
   // A tied slave's DOFs act on all 6 master DOFs (the lever arm couples rotation into translation).
-  for (const MeshElement& e : model.mesh.elements)
-    for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < 3; ++b)
+  auto couple = [&](const std::array<int, 3>& first, const std::array<int, 3>& second) {
+    for (int a : first)
+      for (int b : second)
         for (int i = 0; i < 6; ++i)
           for (int j = 0; j < 6; ++j) {
-            const int row = effective_equation(e.nodes[a], i), col = effective_equation(e.nodes[b], j);
+            const int row = effective_equation(a, i), col = effective_equation(b, j);
             if (row >= 0 && col >= 0) rows_of_column[col].push_back(row);
           }
+  };
+  for (const MeshElement& e : model.mesh.elements) couple(e.nodes, e.nodes);
+  for (const auto& [e, f] : model.contacts.element_pairs()) {
+    const auto &a = model.mesh.elements[e].nodes, &b = model.mesh.elements[f].nodes;
+    couple(a, b);
+    couple(b, a);
+  }
   pattern_.size = n;
   pattern_.column_start.assign(n + 1, 0);
   for (int c = 0; c < n; ++c) {
@@ -51,6 +58,49 @@ Assembler::Assembler(const Model& model, const DofMap& dofs) : dofs_(dofs) {
   outputs_.resize(model.mesh.elements.size());
 }
 
+template <int Nodes>
+void Assembler::scatter(const Model& model, const std::vector<NodeState>& state, const std::array<int, Nodes>& nodes,
+                        Eigen::Matrix<double, 6 * Nodes, 1> r, Eigen::Matrix<double, 6 * Nodes, 6 * Nodes>* K,
+                        std::vector<double>& nodal_forces, std::vector<double>& slave_forces,
+                        std::vector<double>* values, const int* slots) {
+  constexpr int size = 6 * Nodes;
+  // Move tied nodes' contributions to their masters: r_m = T^T r_s, K_ab = T_a^T K_ab T_b.
+  Eigen::Matrix<double, size, size> transform = Eigen::Matrix<double, size, size>::Identity();
+  bool any_tied = false;
+  for (int a = 0; a < Nodes; ++a) {
+    const int tie = dofs_.tie_of[nodes[a]];
+    if (tie < 0) continue;
+    any_tied = true;
+    for (int c = 0; c < 6; ++c) slave_forces[6 * nodes[a] + c] += r[6 * a + c];
+    const int master = model.ties[tie].master;
+    transform.template block<6, 6>(6 * a, 6 * a) = tie_transform(state[nodes[a]].position - state[master].position);
+  }
+  if (any_tied) {
+    r = transform.transpose() * r;
+    if (K) *K = transform.transpose() * (*K) * transform;
+  }
+  for (int a = 0; a < Nodes; ++a) {
+    const int target = dofs_.master_of(model, nodes[a]);
+    for (int c = 0; c < 6; ++c) nodal_forces[6 * target + c] += r[6 * a + c];
+  }
+  if (!K) return;
+  for (int a = 0; a < size; ++a) {
+    const int row = dofs_.equation[dofs_.master_of(model, nodes[a / 6])][a % 6];
+    if (!slots && row < 0) continue;
+    for (int b = 0; b < size; ++b) {
+      int slot;
+      if (slots) {
+        slot = slots[a * size + b];
+      } else {
+        const int col = dofs_.equation[dofs_.master_of(model, nodes[b / 6])][b % 6];
+        if (col < 0 || (*K)(a, b) == 0.0) continue;
+        slot = pattern_.find(row, col);
+      }
+      if (slot >= 0) (*values)[slot] += (*K)(a, b);
+    }
+  }
+}
+
 void Assembler::assemble(Model& model, const std::vector<NodeState>& state, std::vector<double>& nodal_forces,
                          std::vector<double>* values) {
   const bool with_tangent = values != nullptr;
@@ -62,40 +112,31 @@ void Assembler::assemble(Model& model, const std::vector<NodeState>& state, std:
     for (int i = 0; i < 3; ++i) local[i] = state[element.nodes()[i]];
     element.evaluate(local, with_tangent, outputs_[k]);
   }
+  if (model.contacts.enabled()) model.contacts.evaluate(model.mesh, state, with_tangent);
   const std::size_t node_count = model.mesh.nodes.size();
   nodal_forces.assign(6 * node_count, 0.0);
   std::vector<double> slave_forces(6 * node_count, 0.0);
   if (with_tangent) values->assign(pattern_.nonzeros(), 0.0);
   for (int k = 0; k < element_count; ++k) {
-    const auto& nodes = model.elements[k].nodes();
-    ElementVector r = outputs_[k].residual;
     ElementMatrix K;
     if (with_tangent) K = outputs_[k].tangent;
-    // Move tied nodes' contributions to their masters: r_m = T^T r_s, K_ab = T_a^T K_ab T_b.
-    Eigen::Matrix<double, 18, 18> transform = Eigen::Matrix<double, 18, 18>::Identity();
-    bool any_tied = false;
-    for (int a = 0; a < 3; ++a) {
-      const int tie = dofs_.tie_of[nodes[a]];
-      if (tie < 0) continue;
-      any_tied = true;
-      for (int c = 0; c < 6; ++c) slave_forces[6 * nodes[a] + c] += r[6 * a + c];
-      const int master = model.ties[tie].master;
-      transform.block<6, 6>(6 * a, 6 * a) = tie_transform(state[nodes[a]].position - state[master].position);
+    scatter<3>(model, state, model.elements[k].nodes(), outputs_[k].residual, with_tangent ? &K : nullptr, nodal_forces,
+               slave_forces, values, &element_slots_[static_cast<std::size_t>(k) * 324]);
+  }
+  // Contact points act on the translations of their six nodes; sequential, in point order (deterministic).
+  const auto& responses = model.contacts.responses();
+  for (std::size_t i = 0; i < responses.size(); ++i) {
+    const ContactResponse& c = responses[i];
+    if (c.status == ContactStatus::kOpen) continue;
+    Eigen::Matrix<double, 36, 1> r = Eigen::Matrix<double, 36, 1>::Zero();
+    Eigen::Matrix<double, 36, 36> K = Eigen::Matrix<double, 36, 36>::Zero();
+    for (int a = 0; a < 6; ++a) {
+      r.segment<3>(6 * a) = c.force.segment<3>(3 * a);
+      if (with_tangent)
+        for (int b = 0; b < 6; ++b) K.block<3, 3>(6 * a, 6 * b) = c.tangent.block<3, 3>(3 * a, 3 * b);
     }
-    if (any_tied) {
-      r = transform.transpose() * r;
-      if (with_tangent) K = transform.transpose() * K * transform;
-    }
-    for (int a = 0; a < 3; ++a) {
-      const int target = dofs_.master_of(model, nodes[a]);
-      for (int c = 0; c < 6; ++c) nodal_forces[6 * target + c] += r[6 * a + c];
-    }
-    if (with_tangent) {
-      const int* slots = &element_slots_[static_cast<std::size_t>(k) * 324];
-      for (int a = 0; a < 18; ++a)
-        for (int b = 0; b < 18; ++b)
-          if (slots[a * 18 + b] >= 0) (*values)[slots[a * 18 + b]] += K(a, b);
-    }
+    scatter<6>(model, state, model.contacts.nodes_of(model.mesh, static_cast<int>(i)), r, with_tangent ? &K : nullptr,
+               nodal_forces, slave_forces, values, nullptr);
   }
   if (!with_tangent) return;
   // Rotation of the lever arm: d(arm x f)/dtheta_m = f^ arm^ (f: the slave's force, held fixed).

@@ -1,4 +1,4 @@
-// Global assembly of beam (and later contact) contributions into nodal forces and a CSC tangent.
+// Global assembly of beam and contact contributions into nodal forces and a CSC tangent.
 #pragma once
 #include <vector>
 
@@ -12,16 +12,25 @@ namespace strandfem {
 // element order so the sums, and hence the results, do not depend on the thread count.
 class Assembler {
  public:
+  // The pattern couples each element's nodes and, for every pair in model.contacts.element_pairs(), the
+  // nodes of the two elements.
   Assembler(const Model& model, const DofMap& dofs);
 
   const SparsePattern& pattern() const { return pattern_; }
 
-  // Internal nodal forces in master space (6 per node: force, moment about the node; tied slaves'
+  // Internal nodal forces (beam elements and contact points) in master space (6 per node: force, moment about the node; tied slaves'
   // forces moved to their masters) and, when values != nullptr, the tangent on free DOFs.
   void assemble(Model& model, const std::vector<NodeState>& state, std::vector<double>& nodal_forces,
                 std::vector<double>* values);
 
  private:
+  // Adds a block over `nodes` (6 DOFs each) to the global forces and tangent, moving tied slaves' rows and
+  // columns to their masters; tied slaves' forces are also collected for the lever-arm term.
+  template <int Nodes>
+  void scatter(const Model& model, const std::vector<NodeState>& state, const std::array<int, Nodes>& nodes,
+               Eigen::Matrix<double, 6 * Nodes, 1> r, Eigen::Matrix<double, 6 * Nodes, 6 * Nodes>* K,
+               std::vector<double>& nodal_forces, std::vector<double>& slave_forces, std::vector<double>* values,
+               const int* slots);
   const DofMap& dofs_;
   SparsePattern pattern_;
   std::vector<int> element_slots_;               // 324 per element, -1 where row or column is constrained

@@ -6,6 +6,7 @@
 #include "strandfem/analysis/load_protocol.hpp"
 #include "strandfem/beam/beam_element.hpp"
 #include "strandfem/constraints/rigid_tie.hpp"
+#include "strandfem/contact/contact_set.hpp"
 #include "strandfem/mesh/mesh.hpp"
 
 namespace strandfem {
@@ -29,6 +30,8 @@ struct Model {
   std::vector<Support> supports;
   std::vector<LoadStep> steps;
   SolverOptions options;
+  ContactSettings contact_settings;  // contact.enabled = false: wires do not interact
+  ContactSet contacts;               // built by StaticAnalysis from contact_settings; owns contact histories
 
   // Builds one BeamElement per mesh element from the mesh's reference configuration.
   void build_elements();

@@ -12,6 +12,7 @@ StaticAnalysis::StaticAnalysis(Model& model) : model_(model) {
   if (model_.options.threads > 0) omp_set_num_threads(model_.options.threads);
   if (model_.elements.empty()) model_.build_elements();
   dofs_ = build_dof_map(model_);
+  model_.contacts.initialize(model_.mesh, model_.contact_settings);
   assembler_ = std::make_unique<Assembler>(model_, dofs_);
   solver_ = make_linear_solver(model_.options.linear_solver);
   solver_->analyze(assembler_->pattern());
@@ -148,6 +149,11 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
       report.step_fraction = target;
       if (solve_increment(target, ramps, report, on_progress)) {
         for (BeamElement& e : model_.elements) e.commit();
+        if (model_.contacts.commit(model_.mesh, state_)) {
+          // Contact found new element pairs: the tangent's pattern grows and is analyzed again.
+          assembler_ = std::make_unique<Assembler>(model_, dofs_);
+          solver_->analyze(assembler_->pattern());
+        }
         committed_state_ = state_;
         committed_motion_ = applied_motion_;
         fraction = target;

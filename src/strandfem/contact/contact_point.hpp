@@ -1,0 +1,142 @@
+// One beam-to-beam contact point (a slave Gauss point in line contact, or a crossing in point contact):
+// its fixed data, its committed history, and the penalty/Coulomb force law with its exact linearization.
+#pragma once
+#include <array>
+
+#include <Eigen/Core>
+
+#include "strandfem/contact/contact_kinematics.hpp"
+#include "strandfem/contact/contact_settings.hpp"
+#include "strandfem/core/types.hpp"
+
+namespace strandfem {
+
+enum class ContactKind { kLine, kPoint };
+enum class ContactStatus { kOpen = 0, kStick = 1, kSlip = 2 };
+const char* to_string(ContactKind kind);
+const char* to_string(ContactStatus status);
+
+// Wire material coordinate: element index within the wire plus (xi + 1) / 2, so it runs 0..elements.
+inline double wire_coordinate(int element_in_wire, double xi) { return element_in_wire + 0.5 * (xi + 1.0); }
+inline double element_parameter(double coordinate, int element_in_wire) { return 2.0 * (coordinate - element_in_wire) - 1.0; }
+
+// History of a contact point; written only when an increment converges.
+struct ContactHistory {
+  bool closed = false;             // in contact at the last converged state
+  double stick_a = 0, stick_b = 0; // wire coordinates of the stick points on the slave (a) and master (b)
+  double slip = 0;                 // accumulated slip, mm
+  double slip_since_reversal = 0;  // slip since the slip direction last reversed, mm
+  Vec3 slip_direction = Vec3::Zero();
+};
+
+// Fixed data of a contact point plus its committed history. Line points keep xi (their Gauss point) and
+// pick their master element per evaluation among the group's candidates; point contacts keep their
+// element pair and move to a neighbour when a converged crossing leaves the element.
+struct ContactPoint {
+  ContactKind kind = ContactKind::kPoint;
+  int wire_a = -1, wire_b = -1;    // slave, master
+  int element_a = -1;              // index within wire a
+  int element_b = -1;              // index within wire b (point contacts; line: last converged master element)
+  int group = -1;                  // line contacts: index of the (slave element, master wire) group
+  double xi = 0, eta = 0;          // last converged parameters (line: xi is the Gauss point)
+  double weight = 1;               // line: Gauss weight x reference half length (mm); point: 1
+  double radius_a = 0, radius_b = 0;
+  double gap_offset = 0;           // subtracted from the gap: the reference overlap (<= 0) or 0
+  PenaltyStiffness stiffness;
+  double mu1 = 0, mu2 = 0;         // along the strand axis projected on the contact plane, and across
+  ContactHistory history;
+};
+
+// Result of evaluating one contact point at a given state.
+struct ContactResponse {
+  ContactStatus status = ContactStatus::kOpen;
+  int element_b = -1;              // master element (index within wire b) used
+  double xi = 0, eta = 0;
+  double gap = 0;                  // mm, after the overlap offset
+  double normal_force = 0;         // P: N (point) or N/mm (line)
+  Vec3 normal = Vec3::Zero();      // from master to slave
+  Vec3 position = Vec3::Zero();    // contact point on the master surface
+  double q1 = 0, q2 = 0;           // friction on the slave along directions 1 and 2: N or N/mm
+  Vec3 tangential_gap = Vec3::Zero();  // elastic + trial slip vector of the slave relative to the master, mm
+  double slip_ratio = 1;           // P / ||Q_trial||_mu when slipping, 1 when sticking
+  Eigen::Matrix<double, 18, 1> force = Eigen::Matrix<double, 18, 1>::Zero();  // internal forces, 6 nodes x 3
+  Eigen::Matrix<double, 18, 18> tangent = Eigen::Matrix<double, 18, 18>::Zero();
+};
+
+// Internal nodal forces (translations of a0, a1, a2, b0, b1, b2) of a contact point for the given nodal
+// centerlines and converged parameters xi, eta (doubles). T = double for the value, Dual<double, 18> for the
+// tangent (the parameters then get one Newton step in T, which gives their exact derivatives).
+template <class T>
+struct ContactForces {
+  std::array<V3<T>, 6> nodal;
+  T gap{}, normal_force{}, q1{}, q2{};
+  V3<T> normal{}, tangential_gap{};
+  ContactStatus status = ContactStatus::kOpen;
+  double slip_ratio = 1;
+};
+
+template <class T>
+ContactForces<T> contact_forces(const ContactPoint& point, const ElementCenterline<T>& a, const ElementCenterline<T>& b,
+                                double xi0, double eta0, double stick_xi, double stick_eta, const Vec3& axis) {
+  ContactForces<T> out;
+  for (auto& f : out.nodal) f = {T(0.0), T(0.0), T(0.0)};
+  T xi(xi0), eta(eta0);
+  if (point.kind == ContactKind::kPoint) {
+    const auto next = closest_points_newton_step(a, b, xi, eta);
+    xi = next[0];
+    eta = next[1];
+  } else {
+    eta = projection_newton_step(centerline_point(a, xi), b, eta);
+    xi = T(xi0);
+  }
+  const V3<T> xa = centerline_point(a, xi), xb = centerline_point(b, eta);
+  const V3<T> d = sub(xa, xb);
+  const T distance = sqrt(dot(d, d));
+  out.normal = scale(1.0 / distance, d);
+  out.gap = distance - (point.radius_a + point.radius_b) - point.gap_offset;
+  if (!(value_of(out.gap) < 0.0)) return out;
+  const V3<T>& n = out.normal;
+  out.status = ContactStatus::kStick;
+  out.normal_force = -point.stiffness.normal * out.gap;
+  V3<T> total = scale(out.normal_force, n);
+  if (point.history.closed && point.mu1 > 0) {
+    // Tangential gap: the stick points' separation projected on the contact plane.
+    const V3<T> separation = sub(centerline_point(a, stick_xi), centerline_point(b, stick_eta));
+    out.tangential_gap = sub(separation, scale(dot(n, separation), n));
+    const V3<T> trial = scale(-point.stiffness.tangential, out.tangential_gap);
+    // Direction 1: the strand axis projected on the contact plane; direction 2 = direction 1 x n.
+    const V3<T> strand_axis{T(axis[0]), T(axis[1]), T(axis[2])};
+    V3<T> d1 = sub(strand_axis, scale(dot(n, strand_axis), n));
+    const T d1_norm = sqrt(dot(d1, d1));
+    d1 = scale(1.0 / d1_norm, d1);
+    const V3<T> d2 = cross(d1, n);
+    out.q1 = dot(trial, d1);
+    out.q2 = dot(trial, d2);
+    const T measure2 = (out.q1 / point.mu1) * (out.q1 / point.mu1) + (out.q2 / point.mu2) * (out.q2 / point.mu2);
+    V3<T> friction = trial;
+    if (value_of(measure2) > value_of(out.normal_force) * value_of(out.normal_force)) {
+      // Slip: radial return onto the ellipse (Q1/mu1)^2 + (Q2/mu2)^2 = P^2, keeping the trial direction.
+      const T ratio = out.normal_force / sqrt(measure2);
+      out.slip_ratio = value_of(ratio);
+      friction = scale(ratio, trial);
+      out.q1 = ratio * out.q1;
+      out.q2 = ratio * out.q2;
+      out.status = ContactStatus::kSlip;
+    }
+    total = add(total, friction);
+  }
+  // Internal force = minus the contact force acting on the node; weight turns per-length into force.
+  const auto na = centerline_shape(xi), nb = centerline_shape(eta);
+  for (int i = 0; i < 3; ++i) {
+    out.nodal[i] = scale(-point.weight * na[i], total);
+    out.nodal[3 + i] = scale(point.weight * nb[i], total);
+  }
+  return out;
+}
+
+// Value, outputs and (if with_tangent) exact tangent of a contact point.
+ContactResponse evaluate_contact(const ContactPoint& point, const ElementCenterline<double>& a,
+                                 const ElementCenterline<double>& b, int element_b, double xi, double eta,
+                                 const Vec3& axis, bool with_tangent);
+
+}  // namespace strandfem

@@ -1,0 +1,372 @@
+#include "strandfem/contact/contact_set.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "strandfem/contact/contact_search.hpp"
+
+namespace strandfem {
+
+namespace {
+
+constexpr double kRangeTolerance = 1e-9;
+
+ElementCenterline<double> centerline(const Mesh& mesh, const std::vector<NodeState>& state, int element) {
+  ElementCenterline<double> x;
+  for (int i = 0; i < 3; ++i) {
+    const Vec3& p = state[mesh.elements[element].nodes[i]].position;
+    x[i] = {p[0], p[1], p[2]};
+  }
+  return x;
+}
+
+Vec3 to_vec(const V3<double>& v) { return Vec3(v[0], v[1], v[2]); }
+
+int local_index(const Mesh& mesh, int element) {
+  return element - mesh.wires[mesh.elements[element].wire].elements.front();
+}
+
+int element_count(const Mesh& mesh, int wire) { return static_cast<int>(mesh.wires[wire].elements.size()); }
+
+// Half-open parameter ranges (-1, 1] partition a wire among its elements (the first element also takes -1),
+// so a foot point on a shared node belongs to exactly one element.
+bool in_range(double parameter, int local) {
+  const bool above_start = parameter > -1.0 + kRangeTolerance || (local == 0 && parameter >= -1.0 - kRangeTolerance);
+  return above_start && parameter <= 1.0 + kRangeTolerance;
+}
+
+// Gauss-Legendre points and weights on [-1, 1] (Newton on the Legendre polynomial).
+void gauss_legendre(int n, std::vector<double>& points, std::vector<double>& weights) {
+  points.assign(n, 0.0);
+  weights.assign(n, 0.0);
+  for (int i = 0; i < n; ++i) {
+    double x = std::cos(M_PI * (i + 0.75) / (n + 0.5)), derivative = 0;
+    for (int it = 0; it < 100; ++it) {
+      double p0 = 1.0, p1 = x;
+      for (int k = 2; k <= n; ++k) {
+        const double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
+        p0 = p1;
+        p1 = p2;
+      }
+      if (n == 1) p1 = x, p0 = 1.0;
+      derivative = n * (x * p1 - p0) / (x * x - 1.0);
+      const double step = p1 / derivative;
+      x -= step;
+      if (std::abs(step) < 1e-15) break;
+    }
+    points[n - 1 - i] = x;
+    weights[n - 1 - i] = 2.0 / ((1.0 - x * x) * derivative * derivative);
+  }
+}
+
+double arc_length(const ElementCenterline<double>& x) {
+  std::vector<double> gp, gw;
+  gauss_legendre(4, gp, gw);
+  double length = 0;
+  for (int i = 0; i < 4; ++i) {
+    const V3<double> t = centerline_tangent(x, gp[i]);
+    length += gw[i] * std::sqrt(dot(t, t));
+  }
+  return length;
+}
+
+}  // namespace
+
+void ContactSet::initialize(const Mesh& mesh, const ContactSettings& settings) {
+  settings.validate();
+  settings_ = settings;
+  settings_.strand_axis.normalize();
+  points_.clear();
+  groups_.clear();
+  group_of_.clear();
+  wire_pair_kind_.clear();
+  searches_ = 0;
+  if (!settings_.enabled) return;
+  std::vector<NodeState> reference;
+  for (const MeshNode& n : mesh.nodes) reference.push_back(n.reference);
+  search(mesh, reference);
+  responses_.assign(points_.size(), ContactResponse{});
+}
+
+void ContactSet::search(const Mesh& mesh, const std::vector<NodeState>& state) {
+  std::vector<double> inflation(mesh.elements.size(), -1.0);
+  for (std::size_t e = 0; e < mesh.elements.size(); ++e) {
+    const double radius = mesh.sections[mesh.elements[e].section]->geometry().contact_radius;
+    if (radius > 0) inflation[e] = radius + settings_.search_margin;
+  }
+  const auto pairs = find_candidate_pairs(mesh, state, inflation);
+  auto wire_key = [](int a, int b) { return std::make_pair(std::min(a, b), std::max(a, b)); };
+  // Classify each new wire pair once, by the mean angle between the chords of its candidate elements.
+  std::map<std::pair<int, int>, std::pair<double, int>> angles;
+  for (const auto& [e, f] : pairs) {
+    const auto key = wire_key(mesh.elements[e].wire, mesh.elements[f].wire);
+    if (wire_pair_kind_.count(key)) continue;
+    const auto xe = centerline(mesh, state, e), xf = centerline(mesh, state, f);
+    const Vec3 te = (to_vec(xe[2]) - to_vec(xe[0])).normalized(), tf = (to_vec(xf[2]) - to_vec(xf[0])).normalized();
+    auto& acc = angles[key];
+    acc.first += std::acos(std::min(1.0, std::abs(te.dot(tf)))) * 180.0 / M_PI;
+    acc.second += 1;
+  }
+  for (const auto& [key, acc] : angles)
+    wire_pair_kind_[key] = acc.first / acc.second < settings_.line_contact_angle ? ContactKind::kLine : ContactKind::kPoint;
+
+  std::vector<int> new_groups;
+  for (const auto& [e, f] : pairs) {
+    const int we = mesh.elements[e].wire, wf = mesh.elements[f].wire;
+    const MeshWire &a = mesh.wires[we], &b = mesh.wires[wf];
+    if (wire_pair_kind_.at(wire_key(we, wf)) == ContactKind::kLine) {
+      // Slave: the outer layer (core-layer contacts: the helical wire); within a layer, the higher index.
+      const bool e_is_slave = a.layer != b.layer ? a.layer > b.layer : we > wf;
+      const int slave = e_is_slave ? e : f, master = e_is_slave ? f : e;
+      const int wire_b = mesh.elements[master].wire;
+      auto [it, inserted] = group_of_.try_emplace({slave, wire_b}, static_cast<int>(groups_.size()));
+      if (inserted) groups_.push_back(LineContactGroup{slave, wire_b, {}});
+      auto& candidates = groups_[it->second].candidates;
+      const int local = local_index(mesh, master);
+      if (std::find(candidates.begin(), candidates.end(), local) == candidates.end()) candidates.push_back(local);
+      std::sort(candidates.begin(), candidates.end());
+      if (inserted) new_groups.push_back(it->second);
+    } else {
+      // Point contacts: slave on the inner layer, as the paper maps its contact elements.
+      const bool e_is_slave = a.layer != b.layer ? a.layer < b.layer : we < wf;
+      const int slave = e_is_slave ? e : f, master = e_is_slave ? f : e;
+      // Newton from a few starts: from the middle alone it can run to a far stationary point.
+      const auto xs = centerline(mesh, state, slave), xm = centerline(mesh, state, master);
+      const int ls = local_index(mesh, slave), lm = local_index(mesh, master);
+      for (double start_xi : {0.0, -0.7, 0.7})
+        for (double start_eta : {0.0, -0.7, 0.7}) {
+          double xi = start_xi, eta = start_eta;
+          if (closest_points(xs, xm, xi, eta) && in_range(xi, ls) && in_range(eta, lm)) {
+            add_crossing(mesh, slave, master, xi, eta);
+            goto next_pair;
+          }
+        }
+    next_pair:;
+    }
+  }
+  // Points of new groups once their candidate lists are complete (the overlap offset projects onto them).
+  for (int g : new_groups) add_line_points(mesh, g);
+  responses_.resize(points_.size());
+  searched_positions_.clear();
+  for (const NodeState& s : state) searched_positions_.push_back(s.position);
+  ++searches_;
+  element_pairs_ = collect_element_pairs(mesh);
+}
+
+void ContactSet::set_point_properties(const Mesh& mesh, ContactPoint& p, const Vec3& reference_position) {
+  const Section& sa = *mesh.sections[mesh.wires[p.wire_a].section];
+  const Section& sb = *mesh.sections[mesh.wires[p.wire_b].section];
+  p.radius_a = sa.geometry().contact_radius;
+  p.radius_b = sb.geometry().contact_radius;
+  const double modulus = std::min(sa.material().youngs_modulus, sb.material().youngs_modulus);
+  const double diameter = 2.0 * std::min(p.radius_a, p.radius_b);
+  const int slave_element = mesh.wires[p.wire_a].elements[p.element_a];
+  ElementCenterline<double> x;
+  for (int i = 0; i < 3; ++i) {
+    const Vec3& q = mesh.nodes[mesh.elements[slave_element].nodes[i]].reference.position;
+    x[i] = {q[0], q[1], q[2]};
+  }
+  const double element_size = arc_length(x);
+  p.mu1 = settings_.friction_at(sa.material().name, sb.material().name, reference_position.dot(settings_.strand_axis));
+  p.mu2 = p.mu1 * settings_.orthotropy_ratio;
+  p.stiffness = penalty_stiffness(settings_, p.kind == ContactKind::kLine, modulus, diameter, element_size, p.mu1);
+}
+
+void ContactSet::add_line_points(const Mesh& mesh, int group) {
+  const LineContactGroup& g = groups_[group];
+  std::vector<double> gp, gw;
+  gauss_legendre(settings_.line_points, gp, gw);
+  ElementCenterline<double> x;
+  for (int i = 0; i < 3; ++i) {
+    const Vec3& q = mesh.nodes[mesh.elements[g.slave_element].nodes[i]].reference.position;
+    x[i] = {q[0], q[1], q[2]};
+  }
+  for (int k = 0; k < settings_.line_points; ++k) {
+    ContactPoint p;
+    p.kind = ContactKind::kLine;
+    p.wire_a = mesh.elements[g.slave_element].wire;
+    p.wire_b = g.wire_b;
+    p.element_a = local_index(mesh, g.slave_element);
+    p.group = group;
+    p.xi = gp[k];
+    const V3<double> t = centerline_tangent(x, gp[k]);
+    p.weight = gw[k] * std::sqrt(dot(t, t));
+    set_point_properties(mesh, p, to_vec(centerline_point(x, gp[k])));
+    if (settings_.initial_overlap == InitialOverlap::kOffset) p.gap_offset = std::min(0.0, reference_gap(mesh, p));
+    points_.push_back(p);
+  }
+}
+
+void ContactSet::add_crossing(const Mesh& mesh, int element_a, int element_b, double xi, double eta) {
+  ContactPoint p;
+  p.kind = ContactKind::kPoint;
+  p.wire_a = mesh.elements[element_a].wire;
+  p.wire_b = mesh.elements[element_b].wire;
+  p.element_a = local_index(mesh, element_a);
+  p.element_b = local_index(mesh, element_b);
+  p.xi = xi;
+  p.eta = eta;
+  const double sa = wire_coordinate(p.element_a, xi), sb = wire_coordinate(p.element_b, eta);
+  for (const ContactPoint& q : points_)
+    if (q.kind == ContactKind::kPoint && q.wire_a == p.wire_a && q.wire_b == p.wire_b &&
+        std::abs(wire_coordinate(q.element_a, q.xi) - sa) < 0.5 && std::abs(wire_coordinate(q.element_b, q.eta) - sb) < 0.5)
+      return;  // the same crossing, already tracked
+  std::vector<NodeState> reference;
+  for (const MeshNode& n : mesh.nodes) reference.push_back(n.reference);
+  set_point_properties(mesh, p, to_vec(centerline_point(centerline(mesh, reference, element_a), xi)));
+  if (settings_.initial_overlap == InitialOverlap::kOffset) p.gap_offset = std::min(0.0, reference_gap(mesh, p));
+  points_.push_back(p);
+  responses_.resize(points_.size());
+}
+
+double ContactSet::reference_gap(const Mesh& mesh, const ContactPoint& p) const {
+  std::vector<NodeState> reference;
+  for (const MeshNode& n : mesh.nodes) reference.push_back(n.reference);
+  const double radii = p.radius_a + p.radius_b;
+  if (p.kind == ContactKind::kPoint) {
+    double xi = p.xi, eta = p.eta;
+    const auto a = centerline(mesh, reference, mesh.wires[p.wire_a].elements[p.element_a]);
+    const auto b = centerline(mesh, reference, mesh.wires[p.wire_b].elements[p.element_b]);
+    if (!closest_points(a, b, xi, eta)) return 0.0;
+    const V3<double> d = sub(centerline_point(a, xi), centerline_point(b, eta));
+    return std::sqrt(dot(d, d)) - radii;
+  }
+  const LineContactGroup& g = groups_[p.group];
+  const auto a = centerline(mesh, reference, g.slave_element);
+  const V3<double> xa = centerline_point(a, p.xi);
+  double best = 1e300;
+  for (int k : g.candidates) {
+    const auto b = centerline(mesh, reference, mesh.wires[g.wire_b].elements[k]);
+    double eta = 0;
+    if (!project_point(xa, b, eta) || !in_range(eta, k)) continue;
+    const V3<double> d = sub(xa, centerline_point(b, eta));
+    best = std::min(best, std::sqrt(dot(d, d)) - radii);
+  }
+  return best < 1e299 ? best : 0.0;
+}
+
+ContactResponse ContactSet::evaluate_point(const Mesh& mesh, const std::vector<NodeState>& state, int index,
+                                           bool with_tangent) const {
+  const ContactPoint& p = points_[index];
+  ContactResponse open;
+  open.element_b = p.element_b;
+  open.xi = p.xi;
+  open.eta = p.eta;
+  open.gap = 1e300;
+  if (p.kind == ContactKind::kPoint) {
+    double xi = p.xi, eta = p.eta;
+    const auto a = centerline(mesh, state, mesh.wires[p.wire_a].elements[p.element_a]);
+    const auto b = centerline(mesh, state, mesh.wires[p.wire_b].elements[p.element_b]);
+    if (!closest_points(a, b, xi, eta) || std::abs(xi) > 1.5 || std::abs(eta) > 1.5) return open;
+    // Past a wire's end there is no wire to touch.
+    if ((p.element_a == 0 && xi < -1.0) || (p.element_a == element_count(mesh, p.wire_a) - 1 && xi > 1.0) ||
+        (p.element_b == 0 && eta < -1.0) || (p.element_b == element_count(mesh, p.wire_b) - 1 && eta > 1.0))
+      return open;
+    return evaluate_contact(p, a, b, p.element_b, xi, eta, settings_.strand_axis, with_tangent);
+  }
+  const LineContactGroup& g = groups_[p.group];
+  const auto a = centerline(mesh, state, g.slave_element);
+  const V3<double> xa = centerline_point(a, p.xi);
+  int best = -1;
+  double best_distance = 1e300, best_eta = 0;
+  for (int k : g.candidates) {
+    const auto b = centerline(mesh, state, mesh.wires[g.wire_b].elements[k]);
+    double eta = k == p.element_b ? p.eta : 0.0;
+    if (!project_point(xa, b, eta) || !in_range(eta, k)) continue;
+    const V3<double> d = sub(xa, centerline_point(b, eta));
+    const double distance = std::sqrt(dot(d, d));
+    if (distance < best_distance) best = k, best_distance = distance, best_eta = eta;
+  }
+  if (best < 0) return open;
+  const auto b = centerline(mesh, state, mesh.wires[g.wire_b].elements[best]);
+  return evaluate_contact(p, a, b, best, p.xi, best_eta, settings_.strand_axis, with_tangent);
+}
+
+void ContactSet::evaluate(const Mesh& mesh, const std::vector<NodeState>& state, bool with_tangent) {
+  responses_.resize(points_.size());
+  const int count = static_cast<int>(points_.size());
+#pragma omp parallel for schedule(dynamic, 16)
+  for (int i = 0; i < count; ++i) responses_[i] = evaluate_point(mesh, state, i, with_tangent);
+}
+
+std::array<int, 6> ContactSet::nodes_of(const Mesh& mesh, int index) const {
+  const ContactPoint& p = points_[index];
+  const int element_b = responses_[index].element_b >= 0 ? responses_[index].element_b
+                        : p.element_b >= 0                ? p.element_b
+                                                          : groups_[p.group].candidates.front();
+  const auto& na = mesh.elements[mesh.wires[p.wire_a].elements[p.element_a]].nodes;
+  const auto& nb = mesh.elements[mesh.wires[p.wire_b].elements[element_b]].nodes;
+  return {na[0], na[1], na[2], nb[0], nb[1], nb[2]};
+}
+
+bool ContactSet::commit(const Mesh& mesh, const std::vector<NodeState>& state) {
+  if (!settings_.enabled) return false;
+  evaluate(mesh, state, false);
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    ContactPoint& p = points_[i];
+    const ContactResponse& r = responses_[i];
+    ContactHistory& h = p.history;
+    if (r.status == ContactStatus::kOpen) {
+      // An opened contact forgets its stick point; the slip it accumulated stays on record.
+      h.closed = false;
+      h.slip_since_reversal = 0;
+      h.slip_direction.setZero();
+      continue;
+    }
+    const double sa = wire_coordinate(p.element_a, r.xi), sb = wire_coordinate(r.element_b, r.eta);
+    if (!h.closed) {
+      h.closed = true;
+      h.stick_a = sa;
+      h.stick_b = sb;
+    } else if (r.status == ContactStatus::kSlip) {
+      // Pull the stick points toward the current closest points so that k_t |g_T| = |Q| on the cone.
+      const double c = r.slip_ratio;
+      h.stick_a = sa + (h.stick_a - sa) * c;
+      h.stick_b = sb + (h.stick_b - sb) * c;
+      const double slip = r.tangential_gap.norm() * (1.0 - c);
+      const Vec3 direction = r.tangential_gap.normalized();
+      if (direction.dot(h.slip_direction) < 0) h.slip_since_reversal = 0;
+      h.slip += slip;
+      h.slip_since_reversal += slip;
+      h.slip_direction = direction;
+    }
+    p.xi = r.xi;
+    p.eta = r.eta;
+    p.element_b = r.element_b;
+  }
+  // Crossings that left their element move to the neighbour (parameters re-expressed there).
+  for (ContactPoint& p : points_) {
+    if (p.kind != ContactKind::kPoint) continue;
+    if (p.xi > 1.0 && p.element_a + 1 < element_count(mesh, p.wire_a)) ++p.element_a, p.xi -= 2.0;
+    else if (p.xi < -1.0 && p.element_a > 0) --p.element_a, p.xi += 2.0;
+    if (p.eta > 1.0 && p.element_b + 1 < element_count(mesh, p.wire_b)) ++p.element_b, p.eta -= 2.0;
+    else if (p.eta < -1.0 && p.element_b > 0) --p.element_b, p.eta += 2.0;
+  }
+  double moved = 0;
+  for (std::size_t n = 0; n < state.size(); ++n) moved = std::max(moved, (state[n].position - searched_positions_[n]).norm());
+  const auto before = element_pairs_;
+  if (moved > 0.5 * settings_.search_margin) search(mesh, state);
+  else element_pairs_ = collect_element_pairs(mesh);
+  responses_.resize(points_.size());
+  evaluate(mesh, state, false);  // the committed state's forces and statuses, for output
+  return element_pairs_ != before;
+}
+
+std::vector<std::pair<int, int>> ContactSet::collect_element_pairs(const Mesh& mesh) const {
+  std::vector<std::pair<int, int>> pairs;
+  for (const LineContactGroup& g : groups_)
+    for (int k : g.candidates) pairs.emplace_back(g.slave_element, mesh.wires[g.wire_b].elements[k]);
+  for (const ContactPoint& p : points_)
+    if (p.kind == ContactKind::kPoint)
+      pairs.emplace_back(mesh.wires[p.wire_a].elements[p.element_a], mesh.wires[p.wire_b].elements[p.element_b]);
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  return pairs;
+}
+
+int ContactSet::radial_point_count() const {
+  return static_cast<int>(std::count_if(points_.begin(), points_.end(), [](const ContactPoint& p) { return p.kind == ContactKind::kPoint; }));
+}
+
+}  // namespace strandfem

@@ -1,0 +1,72 @@
+// All contact points of a model: automatic detection, evaluation at a state, history commit, counts.
+#pragma once
+#include <array>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "strandfem/contact/contact_point.hpp"
+#include "strandfem/contact/contact_settings.hpp"
+#include "strandfem/mesh/mesh.hpp"
+
+namespace strandfem {
+
+// A slave element in line contact with one master wire: its Gauss points project onto whichever
+// candidate master element holds their foot point, so force crossing master element ends is neither
+// lost nor counted twice.
+struct LineContactGroup {
+  int slave_element = -1;        // mesh element index
+  int wire_b = -1;
+  std::vector<int> candidates;   // element indices within wire b
+};
+
+class ContactSet {
+ public:
+  // Searches the reference configuration and creates the contact points. Throws std::invalid_argument
+  // for bad settings.
+  void initialize(const Mesh& mesh, const ContactSettings& settings);
+  bool enabled() const { return settings_.enabled; }
+  const ContactSettings& settings() const { return settings_; }
+
+  // Evaluates every point at `state` from the committed histories (no history is written).
+  void evaluate(const Mesh& mesh, const std::vector<NodeState>& state, bool with_tangent);
+  const std::vector<ContactPoint>& points() const { return points_; }
+  const std::vector<ContactResponse>& responses() const { return responses_; }
+  // Mesh nodes a0, a1, a2, b0, b1, b2 of a point as last evaluated (b: the master element used).
+  std::array<int, 6> nodes_of(const Mesh& mesh, int point) const;
+
+  // Converged increment at `state`: writes histories (stick points, slip), moves crossings to the
+  // neighbouring element, re-runs the search when nodes moved more than half the margin. Returns true
+  // when the set of coupled element pairs changed (the tangent's pattern must be rebuilt).
+  bool commit(const Mesh& mesh, const std::vector<NodeState>& state);
+
+  // Mesh element pairs that contact may couple (for the sparsity pattern).
+  const std::vector<std::pair<int, int>>& element_pairs() const { return element_pairs_; }
+  // Lateral pairs: (slave element, master wire) line-contact groups (the paper's "contact pairs").
+  int lateral_pair_count() const { return static_cast<int>(groups_.size()); }
+  // Radial contacts: crossings of wires in point contact.
+  int radial_point_count() const;
+  int line_point_count() const { return static_cast<int>(points_.size()) - radial_point_count(); }
+  int search_count() const { return searches_; }
+
+ private:
+  void search(const Mesh& mesh, const std::vector<NodeState>& state);
+  void add_line_points(const Mesh& mesh, int group);
+  void add_crossing(const Mesh& mesh, int element_a, int element_b, double xi, double eta);
+  void set_point_properties(const Mesh& mesh, ContactPoint& p, const Vec3& reference_position);
+  ContactResponse evaluate_point(const Mesh& mesh, const std::vector<NodeState>& state, int index, bool with_tangent) const;
+  double reference_gap(const Mesh& mesh, const ContactPoint& p) const;
+  std::vector<std::pair<int, int>> collect_element_pairs(const Mesh& mesh) const;
+
+  ContactSettings settings_;
+  std::vector<ContactPoint> points_;
+  std::vector<ContactResponse> responses_;
+  std::vector<LineContactGroup> groups_;
+  std::map<std::pair<int, int>, int> group_of_;             // (slave mesh element, wire b) -> group
+  std::map<std::pair<int, int>, ContactKind> wire_pair_kind_;  // (lower wire, higher wire)
+  std::vector<std::pair<int, int>> element_pairs_;
+  std::vector<Vec3> searched_positions_;
+  int searches_ = 0;
+};
+
+}  // namespace strandfem

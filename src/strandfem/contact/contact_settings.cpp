@@ -1,0 +1,57 @@
+#include "strandfem/contact/contact_settings.hpp"
+
+#include <stdexcept>
+
+namespace strandfem {
+
+namespace {
+void require_positive(double v, const std::string& key) {
+  if (!(v > 0)) throw std::invalid_argument("contact." + key + " must be > 0, got " + std::to_string(v));
+}
+void require_friction(double v, const std::string& key) {
+  if (!(v >= 0 && v < 10)) throw std::invalid_argument("contact." + key + " must be a friction coefficient in [0, 10), got " + std::to_string(v));
+}
+}  // namespace
+
+void ContactSettings::validate() const {
+  require_positive(normal_factor, "normal_factor");
+  require_positive(tangential_factor, "tangential_factor");
+  require_positive(normal_multiplier, "normal_multiplier");
+  require_positive(tangential_multiplier, "tangential_multiplier");
+  require_friction(friction, "friction");
+  for (const auto& p : pair_friction) require_friction(p.coefficient, "friction_pairs[].mu");
+  for (const auto& z : zone_friction) {
+    require_friction(z.coefficient, "friction_zones[].mu");
+    if (!(z.z_max > z.z_min)) throw std::invalid_argument("contact.friction_zones[].z must be [z_min, z_max] with z_max > z_min");
+  }
+  require_positive(orthotropy_ratio, "orthotropy_ratio");
+  require_positive(search_margin, "search_margin");
+  if (!(line_contact_angle > 0 && line_contact_angle < 90))
+    throw std::invalid_argument("contact.line_contact_angle must be in (0, 90) degrees, got " + std::to_string(line_contact_angle));
+  if (line_points < 1 || line_points > 10) throw std::invalid_argument("contact.line_points must be in 1..10");
+  if (!(strand_axis.norm() > 0)) throw std::invalid_argument("contact.axis must be a nonzero vector");
+}
+
+double ContactSettings::friction_at(const std::string& material_a, const std::string& material_b, double z) const {
+  for (const FrictionZone& zone : zone_friction)
+    if (z >= zone.z_min && z <= zone.z_max) return zone.coefficient;
+  for (const MaterialPairFriction& p : pair_friction)
+    if ((p.material_a == material_a && p.material_b == material_b) || (p.material_a == material_b && p.material_b == material_a))
+      return p.coefficient;
+  return friction;
+}
+
+PenaltyStiffness penalty_stiffness(const ContactSettings& s, bool line_contact, double youngs_modulus, double diameter,
+                                   double element_size, double friction) {
+  PenaltyStiffness k;
+  k.normal = s.normal_factor * youngs_modulus * diameter * s.normal_multiplier;
+  // mu = 0 would give no stick stiffness at all; frictionless contacts need none.
+  k.tangential = s.tangential_factor * friction * youngs_modulus * diameter * diameter * s.tangential_multiplier / element_size;
+  if (line_contact) {
+    k.normal /= diameter;
+    k.tangential /= diameter;
+  }
+  return k;
+}
+
+}  // namespace strandfem

@@ -1,0 +1,69 @@
+// Contact options: penalty factors (paper eqs. 2.5-2.6), friction per material pair and axial zone, search.
+#pragma once
+#include <array>
+#include <string>
+#include <vector>
+
+#include "strandfem/core/types.hpp"
+
+namespace strandfem {
+
+// Friction coefficient for one pair of materials (order does not matter).
+struct MaterialPairFriction {
+  std::string material_a, material_b;
+  double coefficient = 0;
+};
+
+// Friction coefficient on an axial band z_min <= z <= z_max (multi-level model, paper section 5.2).
+// Zones override material pairs; the first zone containing the contact wins.
+struct FrictionZone {
+  double z_min = 0, z_max = 0;
+  double coefficient = 0;
+};
+
+// What to do with overlaps present in the nominal (reference) geometry.
+enum class InitialOverlap {
+  kOffset,  // subtract each contact point's reference overlap from its gap: the strand starts stress-free
+  kKeep     // keep it: the overlap is pressed out in the first increment
+};
+
+struct ContactSettings {
+  bool enabled = false;
+  // Penalty factors of eqs. 2.5-2.6: K_n = fKn E d xi_n and K_t = fKt mu E d^2 xi_t / h (N/mm, point
+  // contacts); line contacts use the same divided by d (N/mm^2, i.e. force per length per mm of gap).
+  double normal_factor = 1.0;           // fKn
+  double tangential_factor = 50.0;      // fKt
+  double normal_multiplier = 10.0;      // xi_n
+  double tangential_multiplier = 3.75;  // xi_t
+  // Friction: default coefficient, then material pairs, then axial zones (highest priority).
+  double friction = 0.0;
+  std::vector<MaterialPairFriction> pair_friction;
+  std::vector<FrictionZone> zone_friction;
+  double orthotropy_ratio = 1.0;  // mu2 / mu1 (mu1 along the strand axis projected on the contact plane)
+  Vec3 strand_axis = Vec3::UnitZ();
+  // Search: element boxes are inflated by the wire radius plus this margin (mm); the search reruns when a
+  // node has moved more than half the margin since the last search.
+  double search_margin = 0.5;
+  // Centerlines closer than this angle (degrees) are in line contact, others in point contact.
+  double line_contact_angle = 20.0;
+  int line_points = 4;  // Gauss points per slave element for line contacts
+  InitialOverlap initial_overlap = InitialOverlap::kOffset;
+
+  // Throws std::invalid_argument naming the contact.* key that is wrong.
+  void validate() const;
+  // Coefficient for the materials of the two wires at axial position z.
+  double friction_at(const std::string& material_a, const std::string& material_b, double z) const;
+};
+
+// Penalty stiffnesses of a contact point (eqs. 2.5-2.6).
+struct PenaltyStiffness {
+  double normal = 0;      // N/mm (point) or N/mm^2 (line)
+  double tangential = 0;  // same units
+};
+
+// youngs_modulus and diameter: the softer material and the thinner wire of the pair; element_size: h,
+// the slave element's length.
+PenaltyStiffness penalty_stiffness(const ContactSettings& settings, bool line_contact, double youngs_modulus,
+                                   double diameter, double element_size, double friction);
+
+}  // namespace strandfem

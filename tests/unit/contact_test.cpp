@@ -1,0 +1,267 @@
+// Contact kinematics, force law and linearization against finite differences and closed-form limits.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "strandfem/contact/contact_set.hpp"
+#include "strandfem/mesh/mesh.hpp"
+#include "strandfem/post/analytic.hpp"
+
+namespace strandfem {
+namespace {
+
+using Vector18 = Eigen::Matrix<double, 18, 1>;
+
+// Two slightly curved elements: a along x, b crossing it (angle set by `angle`) just above, overlapping.
+struct PairFixture {
+  ElementCenterline<double> a, b;
+  PairFixture(double angle, double height) {
+    a = {V3<double>{-1.0, 0.0, 0.0}, V3<double>{0.0, 0.05, 0.02}, V3<double>{1.1, 0.0, 0.0}};
+    const double c = std::cos(angle), s = std::sin(angle);
+    b = {V3<double>{-c, -s, height}, V3<double>{0.03, 0.0, height - 0.03}, V3<double>{c, s, height + 0.02}};
+  }
+};
+
+ContactPoint make_point(ContactKind kind) {
+  ContactPoint p;
+  p.kind = kind;
+  p.element_a = 0;
+  p.element_b = 0;
+  p.radius_a = 1.0;
+  p.radius_b = 0.9;
+  p.weight = kind == ContactKind::kLine ? 0.7 : 1.0;
+  p.stiffness = {1.0e4, 4.0e3};
+  p.mu1 = 0.3;
+  p.mu2 = 0.3;
+  return p;
+}
+
+// The response at nodal positions x (18 = a then b), with the parameters solved there.
+ContactResponse response_at(const ContactPoint& p, const Vector18& x, bool tangent, const Vec3& axis) {
+  ElementCenterline<double> a, b;
+  for (int i = 0; i < 3; ++i)
+    for (int c = 0; c < 3; ++c) a[i][c] = x[3 * i + c], b[i][c] = x[9 + 3 * i + c];
+  double xi = p.kind == ContactKind::kLine ? p.xi : 0.0, eta = 0.0;
+  bool ok = p.kind == ContactKind::kLine ? project_point(centerline_point(a, xi), b, eta) : closest_points(a, b, xi, eta);
+  EXPECT_TRUE(ok);
+  return evaluate_contact(p, a, b, 0, xi, eta, axis, tangent);
+}
+
+Vector18 pack(const PairFixture& f) {
+  Vector18 x;
+  for (int i = 0; i < 3; ++i)
+    for (int c = 0; c < 3; ++c) x[3 * i + c] = f.a[i][c], x[9 + 3 * i + c] = f.b[i][c];
+  return x;
+}
+
+// Central differences of the force against the exact tangent.
+double tangent_error(const ContactPoint& p, const Vector18& x, const Vec3& axis, ContactStatus expected) {
+  const ContactResponse r = response_at(p, x, true, axis);
+  EXPECT_EQ(r.status, expected);
+  Eigen::Matrix<double, 18, 18> fd;
+  const double h = 1e-6;
+  for (int k = 0; k < 18; ++k) {
+    Vector18 plus = x, minus = x;
+    plus[k] += h;
+    minus[k] -= h;
+    fd.col(k) = (response_at(p, plus, false, axis).force - response_at(p, minus, false, axis).force) / (2 * h);
+  }
+  return (fd - r.tangent).cwiseAbs().maxCoeff() / r.tangent.cwiseAbs().maxCoeff();
+}
+
+// Stick points offset from the current closest point by `offset` in both parameters.
+void set_stick(ContactPoint& p, const Vector18& x, double offset) {
+  const ContactResponse r = response_at(p, x, false, Vec3::UnitX());
+  p.history.closed = true;
+  p.history.stick_a = wire_coordinate(0, r.xi + offset);
+  p.history.stick_b = wire_coordinate(0, r.eta - 0.7 * offset);
+}
+
+TEST(ContactKinematics, ClosestPointsOfCrossingLines) {
+  ElementCenterline<double> a = {V3<double>{-1, 0, 0}, V3<double>{0, 0, 0}, V3<double>{1, 0, 0}};
+  ElementCenterline<double> b = {V3<double>{0.3, -1, 2}, V3<double>{0.3, 0, 2}, V3<double>{0.3, 1, 2}};
+  double xi = 0, eta = 0.5;
+  ASSERT_TRUE(closest_points(a, b, xi, eta));
+  EXPECT_NEAR(xi, 0.3, 1e-12);
+  EXPECT_NEAR(eta, 0.0, 1e-12);
+}
+
+TEST(ContactKinematics, ProjectionOntoCurvedMasterNearParallel) {
+  // Master: a circular arc of radius 20 sampled by a quadratic element; the point projects radially.
+  const double radius = 20, half = 0.4;
+  ElementCenterline<double> b = {V3<double>{radius * std::cos(-half), radius * std::sin(-half), 0},
+                                 V3<double>{radius, 0, 0}, V3<double>{radius * std::cos(half), radius * std::sin(half), 0}};
+  const V3<double> p{18.0 * std::cos(0.1), 18.0 * std::sin(0.1), 0.0};
+  double eta = 0;
+  ASSERT_TRUE(project_point(p, b, eta));
+  const V3<double> d = sub(p, centerline_point(b, eta));
+  EXPECT_NEAR(dot(d, centerline_tangent(b, eta)), 0.0, 1e-10);
+  EXPECT_NEAR(std::atan2(centerline_point(b, eta)[1], centerline_point(b, eta)[0]), 0.1, 2e-3);  // quadratic arc
+}
+
+TEST(ContactKinematics, ProjectionPastTheEndLeavesTheElement) {
+  ElementCenterline<double> b = {V3<double>{0, 0, 0}, V3<double>{0, 0, 5}, V3<double>{0, 0, 10}};
+  double eta = 0;
+  ASSERT_TRUE(project_point(V3<double>{1.9, 0, 12.0}, b, eta));
+  EXPECT_NEAR(eta, 1.4, 1e-12);  // beyond +1: the neighbouring element holds the foot point
+}
+
+TEST(ContactForceLaw, PointContactNormalForceIsThePenaltyLimit) {
+  PairFixture f(M_PI / 2, 1.85);
+  ContactPoint p = make_point(ContactKind::kPoint);
+  const ContactResponse r = response_at(p, pack(f), false, Vec3::UnitX());
+  ASSERT_EQ(r.status, ContactStatus::kStick);
+  EXPECT_NEAR(r.normal_force, -p.stiffness.normal * r.gap, 1e-9);
+  // Equal and opposite nodal forces: no net force, and the slave is pushed away from the master.
+  Vec3 on_a = Vec3::Zero(), on_b = Vec3::Zero();
+  for (int i = 0; i < 3; ++i) on_a -= r.force.segment<3>(3 * i), on_b -= r.force.segment<3>(9 + 3 * i);
+  EXPECT_NEAR((on_a + on_b).norm(), 0.0, 1e-9);
+  EXPECT_NEAR(on_a.norm(), r.normal_force, 1e-9);
+  EXPECT_LT(on_a.z(), 0.0);
+}
+
+TEST(ContactTangent, PointContactFrictionlessStickSlipOrthotropic) {
+  const Vec3 axis = Vec3(1.0, 0.3, 0.2).normalized();
+  for (double angle : {M_PI / 2, 0.5}) {
+    PairFixture f(angle, 1.8);
+    const Vector18 x = pack(f);
+    ContactPoint p = make_point(ContactKind::kPoint);
+    EXPECT_LT(tangent_error(p, x, axis, ContactStatus::kStick), 1e-6) << "frictionless, angle " << angle;
+    set_stick(p, x, 0.005);
+    EXPECT_LT(tangent_error(p, x, axis, ContactStatus::kStick), 1e-6) << "stick, angle " << angle;
+    set_stick(p, x, 0.2);
+    EXPECT_LT(tangent_error(p, x, axis, ContactStatus::kSlip), 1e-6) << "slip, angle " << angle;
+    p.mu2 = 0.1;
+    EXPECT_LT(tangent_error(p, x, axis, ContactStatus::kSlip), 1e-6) << "orthotropic slip, angle " << angle;
+  }
+}
+
+TEST(ContactTangent, LineContactStickSlipOrthotropic) {
+  // Slave a nearly parallel to master b (5 degrees), side by side.
+  PairFixture f(0.09, 0.0);
+  for (auto& n : f.b) n[1] += 1.8;
+  const Vector18 x = pack(f);
+  const Vec3 axis = Vec3(1.0, 0.1, 0.3).normalized();
+  ContactPoint p = make_point(ContactKind::kLine);
+  p.xi = 0.33;
+  EXPECT_LT(tangent_error(p, x, axis, ContactStatus::kStick), 1e-6);
+  set_stick(p, x, 0.004);
+  EXPECT_LT(tangent_error(p, x, axis, ContactStatus::kStick), 1e-6);
+  set_stick(p, x, 0.3);
+  EXPECT_LT(tangent_error(p, x, axis, ContactStatus::kSlip), 1e-6);
+  p.mu2 = 0.05;
+  EXPECT_LT(tangent_error(p, x, axis, ContactStatus::kSlip), 1e-6);
+}
+
+TEST(ContactForceLaw, SlipForceLiesOnTheFrictionEllipse) {
+  PairFixture f(M_PI / 2, 1.8);
+  const Vector18 x = pack(f);
+  const Vec3 axis = Vec3(1.0, 0.3, 0.2).normalized();
+  ContactPoint p = make_point(ContactKind::kPoint);
+  p.mu2 = 0.12;
+  set_stick(p, x, 0.2);
+  const ContactResponse r = response_at(p, x, false, axis);
+  ASSERT_EQ(r.status, ContactStatus::kSlip);
+  EXPECT_NEAR(std::hypot(r.q1 / p.mu1, r.q2 / p.mu2), r.normal_force, 1e-9 * r.normal_force);
+}
+
+// Two straight parallel wires (slave 2 elements, master 3 elements, so foot points cross master element
+// ends) pressed together: the line load must integrate to p L exactly, without loss or double counting.
+TEST(ContactSet, ParallelWiresCarryTheUniformLineLoad) {
+  Mesh mesh;
+  const ElasticMaterial steel{200000, 0.3, 0, "steel"};
+  mesh.sections.push_back(std::make_unique<ElasticSection>(SectionGeometry::circle(2.0, 0.3), steel));
+  const double length = 30, offset = 1.95;
+  auto line = [&](double x) {
+    return [x, length](double t) { return std::make_pair(Vec3(x, 0, t * length), Mat3::Identity()); };
+  };
+  mesh.add_line("master", -1, 0, 0, 3, line(0.0));
+  mesh.add_line("slave", -1, 1, 0, 2, line(offset));
+  ContactSettings settings;
+  settings.enabled = true;
+  settings.initial_overlap = InitialOverlap::kKeep;
+  ContactSet contacts;
+  contacts.initialize(mesh, settings);
+  EXPECT_EQ(contacts.lateral_pair_count(), 2);
+  EXPECT_EQ(contacts.radial_point_count(), 0);
+  std::vector<NodeState> state;
+  for (const MeshNode& n : mesh.nodes) state.push_back(n.reference);
+  contacts.evaluate(mesh, state, false);
+  const double line_stiffness = settings.normal_factor * steel.youngs_modulus * settings.normal_multiplier;  // fKn E xi_n
+  const double pressure = line_stiffness * (2.0 - offset);
+  Vec3 on_master = Vec3::Zero();
+  for (std::size_t i = 0; i < contacts.points().size(); ++i) {
+    const ContactResponse& r = contacts.responses()[i];
+    ASSERT_EQ(r.status, ContactStatus::kStick);
+    EXPECT_NEAR(r.normal_force, pressure, 1e-9 * pressure);
+    for (int k = 0; k < 3; ++k) on_master -= r.force.segment<3>(9 + 3 * k);
+  }
+  EXPECT_NEAR(on_master.x(), -pressure * length, 1e-9 * pressure * length);
+  EXPECT_NEAR(on_master.y(), 0.0, 1e-9);
+}
+
+TEST(ContactSet, InitialOverlapIsOffset) {
+  Mesh mesh;
+  const ElasticMaterial steel{200000, 0.3, 0, "steel"};
+  mesh.sections.push_back(std::make_unique<ElasticSection>(SectionGeometry::circle(2.0, 0.3), steel));
+  auto line = [](double x) { return [x](double t) { return std::make_pair(Vec3(x, 0, 20 * t), Mat3::Identity()); }; };
+  mesh.add_line("master", -1, 0, 0, 2, line(0.0));
+  mesh.add_line("slave", -1, 1, 0, 2, line(1.9));
+  ContactSettings settings;
+  settings.enabled = true;
+  ContactSet contacts;
+  contacts.initialize(mesh, settings);
+  std::vector<NodeState> state;
+  for (const MeshNode& n : mesh.nodes) state.push_back(n.reference);
+  contacts.evaluate(mesh, state, false);
+  for (const ContactResponse& r : contacts.responses()) EXPECT_EQ(r.status, ContactStatus::kOpen);
+  // Pressing 0.01 mm further closes the contacts with the penalty force of 0.01 mm only.
+  for (std::size_t n = 0; n < state.size(); ++n)
+    if (mesh.nodes[n].wire == 1) state[n].position.x() -= 0.01;
+  contacts.evaluate(mesh, state, false);
+  for (const ContactResponse& r : contacts.responses()) EXPECT_NEAR(r.gap, -0.01, 1e-9);
+}
+
+// The search finds every crossing the helix geometry implies. Paper's 120-wire strand (Table 3 geometry),
+// straight: crossings per layer interface against the helix count (tight, away from the ends where
+// crossings are cut off) and against eq. 2.4, which puts both helices on R_ct (a few percent off).
+TEST(ContactSet, RadialCrossingsMatchEquation24) {
+  StrandSpec strand;
+  strand.length = 200;
+  strand.materials["steel"] = {188000, 0.3, 0, "steel"};
+  const double deg = M_PI / 180;
+  const std::vector<std::array<double, 3>> layers = {{1, 5.8, 0},      {7, 4.3, 11.94}, {17, 3.2, 14.75}, {14, 5.3, 14.37},
+                                                     {21, 5.0, 15.23}, {27, 5.0, 15.66}, {33, 5.0, 15.95}};
+  const auto directions = default_lay_directions(static_cast<int>(layers.size()));
+  for (std::size_t i = 0; i < layers.size(); ++i)
+    strand.layers.push_back({static_cast<int>(layers[i][0]), layers[i][1], "steel", layers[i][2] * deg, directions[i], 0});
+  const Mesh mesh = mesh_strand(strand, MeshSpec{0, 22});
+  ContactSettings settings;
+  settings.enabled = true;
+  ContactSet contacts;
+  contacts.initialize(mesh, settings);
+  std::vector<NodeState> reference;
+  for (const MeshNode& n : mesh.nodes) reference.push_back(n.reference);
+  for (int layer = 2; layer < static_cast<int>(strand.layers.size()); ++layer) {
+    int total = 0, interior = 0;
+    for (const ContactPoint& p : contacts.points()) {
+      if (p.kind != ContactKind::kPoint || mesh.wires[p.wire_a].layer != layer - 1 || mesh.wires[p.wire_b].layer != layer) continue;
+      ++total;
+      const auto& nodes = mesh.elements[mesh.wires[p.wire_a].elements[p.element_a]].nodes;
+      const double z = reference[nodes[1]].position.z() + 0.5 * p.xi * (reference[nodes[2]].position.z() - reference[nodes[0]].position.z());
+      if (z > 0.25 * strand.length && z <= 0.75 * strand.length) ++interior;
+    }
+    const double helix = radial_contact_count_helix(strand, layer), eq24 = radial_contact_count_eq24(strand, layer);
+    EXPECT_NEAR(interior, 0.5 * helix, 0.02 * helix + 2) << "layer " << layer;
+    // Ends cut at most one crossing per wire pair.
+    EXPECT_NEAR(total, helix, strand.layers[layer].wires * strand.layers[layer - 1].wires) << "layer " << layer;
+    EXPECT_NEAR(total / eq24, 1.0, 0.10) << "layer " << layer << ": " << total << " crossings, eq. 2.4 " << eq24;
+  }
+  // Lateral (line) contacts only within a layer and between the core and layer 1.
+  for (const ContactPoint& p : contacts.points())
+    if (p.kind == ContactKind::kLine)
+      EXPECT_TRUE(mesh.wires[p.wire_a].layer == mesh.wires[p.wire_b].layer || (mesh.wires[p.wire_b].layer == 0 && mesh.wires[p.wire_a].layer == 1));
+}
+
+}  // namespace
+}  // namespace strandfem
