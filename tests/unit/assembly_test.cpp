@@ -39,9 +39,10 @@ Eigen::VectorXd free_residual(Model& model, const DofMap& dofs, Assembler& assem
   return r;
 }
 
-TEST(AssemblyTest, TiedStrandTangentMatchesFiniteDifferences) {
+// `contact` is appended to the case: the tangent must stay exact with frictional contacts on tied nodes.
+void check_tied_strand_tangent(const std::string& contact) {
   const std::string path = ::testing::TempDir() + "/tied_strand.yaml";
-  std::ofstream(path) << R"(
+  std::ofstream(path) << contact << R"(
 title: small tied strand
 materials: {steel: {E: 188000, nu: 0.3}}
 strand:
@@ -75,6 +76,17 @@ solver: {force_tolerance: 1.0e-8, moment_tolerance: 1.0e-8}
   for (int eq = 0; eq < dofs.equation_count; ++eq)
     fd.col(eq) = (free_residual(c.model, dofs, assembler, state, eq, h) - free_residual(c.model, dofs, assembler, state, eq, -h)) / (2 * h);
   EXPECT_LT((fd - K).norm() / K.norm(), 1e-6);
+  if (c.model.contact_settings.enabled) {
+    int closed = 0;
+    for (const ContactResponse& r : c.model.contacts.responses()) closed += r.status != ContactStatus::kOpen;
+    EXPECT_GT(closed, 0) << "the check must run with closed contacts";
+  }
+}
+
+TEST(AssemblyTest, TiedStrandTangentMatchesFiniteDifferences) { check_tied_strand_tangent(""); }
+
+TEST(AssemblyTest, TiedStrandWithFrictionalContactTangentMatchesFiniteDifferences) {
+  check_tied_strand_tangent("contact: {friction: 0.3}\n");
 }
 
 }  // namespace

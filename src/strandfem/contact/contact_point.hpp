@@ -12,6 +12,9 @@
 namespace strandfem {
 
 enum class ContactKind { kLine, kPoint };
+constexpr double kContactActivation = 1e-9;  // closed when gap <= this x (r_a + r_b)
+constexpr double kTangentBand = 1e-2;          // open points with gap < this x (r_a + r_b) stiffen the tangent only,
+constexpr double kTangentBandStiffness = 1e-3; // with this fraction of their normal penalty
 enum class ContactStatus { kOpen = 0, kStick = 1, kSlip = 2 };
 const char* to_string(ContactKind kind);
 const char* to_string(ContactStatus status);
@@ -59,6 +62,7 @@ struct ContactResponse {
   double q1 = 0, q2 = 0;           // friction on the slave along directions 1 and 2: N or N/mm
   Vec3 tangential_gap = Vec3::Zero();  // elastic + trial slip vector of the slave relative to the master, mm
   double slip_ratio = 1;           // P / ||Q_trial||_mu when slipping, 1 when sticking
+  bool tangent_only = false;       // open, but within the tangent band (see kTangentBand)
   Eigen::Matrix<double, 18, 1> force = Eigen::Matrix<double, 18, 1>::Zero();  // internal forces, 6 nodes x 3
   Eigen::Matrix<double, 18, 18> tangent = Eigen::Matrix<double, 18, 18>::Zero();
 };
@@ -94,7 +98,9 @@ ContactForces<T> contact_forces(const ContactPoint& point, const ElementCenterli
   const T distance = sqrt(dot(d, d));
   out.normal = scale(1.0 / distance, d);
   out.gap = distance - (point.radius_a + point.radius_b) - point.gap_offset;
-  if (!(value_of(out.gap) < 0.0)) return out;
+  // Touching (gap 0 to round-off, as every offset point is at the start) counts as closed: the first
+  // Newton iteration then sees the contact stiffness instead of letting wires fly through each other.
+  if (value_of(out.gap) > kContactActivation * (point.radius_a + point.radius_b)) return out;
   const V3<T>& n = out.normal;
   out.status = ContactStatus::kStick;
   out.normal_force = -point.stiffness.normal * out.gap;

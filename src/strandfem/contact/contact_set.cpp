@@ -193,7 +193,7 @@ void ContactSet::add_line_points(const Mesh& mesh, int group) {
     const V3<double> t = centerline_tangent(x, gp[k]);
     p.weight = gw[k] * std::sqrt(dot(t, t));
     set_point_properties(mesh, p, to_vec(centerline_point(x, gp[k])));
-    if (settings_.initial_overlap == InitialOverlap::kOffset) p.gap_offset = std::min(0.0, reference_gap(mesh, p));
+    p.gap_offset = initial_offset(mesh, p);
     points_.push_back(p);
   }
 }
@@ -215,9 +215,15 @@ void ContactSet::add_crossing(const Mesh& mesh, int element_a, int element_b, do
   std::vector<NodeState> reference;
   for (const MeshNode& n : mesh.nodes) reference.push_back(n.reference);
   set_point_properties(mesh, p, to_vec(centerline_point(centerline(mesh, reference, element_a), xi)));
-  if (settings_.initial_overlap == InitialOverlap::kOffset) p.gap_offset = std::min(0.0, reference_gap(mesh, p));
+  p.gap_offset = initial_offset(mesh, p);
   points_.push_back(p);
   responses_.resize(points_.size());
+}
+
+double ContactSet::initial_offset(const Mesh& mesh, const ContactPoint& p) const {
+  if (settings_.initial_overlap != InitialOverlap::kOffset) return 0.0;
+  const double gap = reference_gap(mesh, p);
+  return gap < settings_.touch_tolerance * (p.radius_a + p.radius_b) ? gap : 0.0;
 }
 
 double ContactSet::reference_gap(const Mesh& mesh, const ContactPoint& p) const {

@@ -23,7 +23,7 @@ struct FrictionZone {
 
 // What to do with overlaps present in the nominal (reference) geometry.
 enum class InitialOverlap {
-  kOffset,  // subtract each contact point's reference overlap from its gap: the strand starts stress-free
+  kOffset,  // subtract each contact point's reference overlap (or near-touch gap) from its gap: stress-free start
   kKeep     // keep it: the overlap is pressed out in the first increment
 };
 
@@ -48,6 +48,9 @@ struct ContactSettings {
   double line_contact_angle = 20.0;
   int line_points = 4;  // Gauss points per slave element for line contacts
   InitialOverlap initial_overlap = InitialOverlap::kOffset;
+  // With kOffset, reference gaps below this fraction of r_a + r_b are offset too (not only overlaps):
+  // the quadratic interpolation of a helix leaves gaps of order 1e-4 mm between wires meant to touch.
+  double touch_tolerance = 0.002;
 
   // Throws std::invalid_argument naming the contact.* key that is wrong.
   void validate() const;

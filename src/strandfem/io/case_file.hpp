@@ -14,6 +14,9 @@ namespace strandfem {
 struct OutputOptions {
   int every = 1;      // write ParaView files every n-th converged increment (the last one always)
   bool vtu = true;
+  bool contacts = true;          // DIR/contacts.csv and contact point files, when contact is on
+  int contacts_every = 1;        // contact rows every n-th converged increment (the last of each step always)
+  bool contacts_every_set = false;
 };
 
 // A parsed, validated case: the model plus what the outputs need to know about it.

@@ -53,13 +53,19 @@ HistoryRow history_row(const CaseDefinition& c, const StaticAnalysis& analysis, 
   return row;
 }
 
-ResultWriter::ResultWriter(std::filesystem::path directory, const CaseDefinition& c)
-    : directory_(std::move(directory)), case_(c) {
-  std::filesystem::create_directories(directory_);
-  for (const auto& entry : std::filesystem::directory_iterator(directory_)) {
+namespace {
+// Creates the folder and removes a previous run's ParaView files (their count may differ).
+void prepare(const std::filesystem::path& directory) {
+  std::filesystem::create_directories(directory);
+  for (const auto& entry : std::filesystem::directory_iterator(directory)) {
     const auto ext = entry.path().extension();
     if (ext == ".vtu" || ext == ".pvd") std::filesystem::remove(entry.path());
   }
+}
+}  // namespace
+
+ResultWriter::ResultWriter(std::filesystem::path directory, const CaseDefinition& c)
+    : directory_(std::move(directory)), case_(c), contacts_((prepare(directory_), directory_), c) {
   history_.open(directory_ / "history.csv");
   if (!history_) throw std::runtime_error("cannot write " + (directory_ / "history.csv").string());
   history_ << "step,increment,load_factor,axial_strain,axial_force_N,torque_Nmm,end_rotation_rad,transverse_load_N,"
@@ -75,6 +81,7 @@ void ResultWriter::on_increment(const StaticAnalysis& analysis, const IncrementR
                           r.monitor_displacement.z(), r.iterations, r.residual_norm);
   history_.flush();
   ++increments_seen_;
+  contacts_.on_increment(analysis, report, increments_seen_, r.load_factor);
   last_written_ = false;
   if (case_.output.vtu && increments_seen_ % case_.output.every == 0) {
     write_vtu(analysis, r.load_factor);
@@ -126,6 +133,7 @@ void ResultWriter::write_vtu(const StaticAnalysis& analysis, double time) {
   out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
   for (std::size_t i = 0; i < cells; ++i) out << "3\n";  // VTK_LINE
   out << "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+  contacts_.write_vtu(analysis, fmt::format("contacts_{:05d}.vtu", frames_.size()), time);
   frames_.emplace_back(time, name);
   write_pvd();
 }
@@ -158,6 +166,7 @@ void ResultWriter::finish(const StaticAnalysis& analysis, const AnalysisStatus& 
   summary["wall_time_s"] = wall_seconds;
   summary["converged_increments"] = rows_.size();
   summary["linear_solver"] = analysis.linear_solver_name();
+  summary["contacts"] = ContactWriter::summary(analysis);
   summary["configuration"] = case_.resolved;
   std::ofstream(directory_ / "summary.json") << summary.dump(2) << "\n";
 }

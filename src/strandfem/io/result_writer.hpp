@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "strandfem/io/case_file.hpp"
+#include "strandfem/io/contact_writer.hpp"
 #include "strandfem/solver/static_analysis.hpp"
 
 namespace strandfem {
@@ -41,6 +42,7 @@ class ResultWriter {
   std::filesystem::path directory_;
   const CaseDefinition& case_;
   std::ofstream history_;
+  ContactWriter contacts_;
   std::vector<HistoryRow> rows_;
   std::vector<std::pair<double, std::string>> frames_;
   int increments_seen_ = 0;

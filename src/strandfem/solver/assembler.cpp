@@ -127,7 +127,7 @@ void Assembler::assemble(Model& model, const std::vector<NodeState>& state, std:
   const auto& responses = model.contacts.responses();
   for (std::size_t i = 0; i < responses.size(); ++i) {
     const ContactResponse& c = responses[i];
-    if (c.status == ContactStatus::kOpen) continue;
+    if (c.status == ContactStatus::kOpen && !(with_tangent && c.tangent_only)) continue;
     Eigen::Matrix<double, 36, 1> r = Eigen::Matrix<double, 36, 1>::Zero();
     Eigen::Matrix<double, 36, 36> K = Eigen::Matrix<double, 36, 36>::Zero();
     for (int a = 0; a < 6; ++a) {
