@@ -55,9 +55,9 @@ ContactResponse evaluate_contact(const ContactPoint& point, const ElementCenterl
   if (f.status == ContactStatus::kOpen) {
     // Just open (gap below the band): no force, but the closed-side stiffness goes into the tangent, so
     // that a wire lifted off by a round-off amount in one iteration does not fall through in the next.
-    const double band = kTangentBand * (point.radius_a + point.radius_b);
-    if (!with_tangent || !(f.gap < band)) return r;
+    if (!with_tangent || !(f.gap < point.tangent_band)) return r;
     ContactPoint touching = point;
+    touching.tangent_band = 0;
     touching.gap_offset += f.gap;
     touching.history.closed = false;  // normal stiffness only
     touching.stiffness.normal *= kTangentBandStiffness;

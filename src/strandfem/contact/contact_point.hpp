@@ -13,8 +13,8 @@ namespace strandfem {
 
 enum class ContactKind { kLine, kPoint };
 constexpr double kContactActivation = 1e-9;  // closed when gap <= this x (r_a + r_b)
-constexpr double kTangentBand = 1e-2;          // open points with gap < this x (r_a + r_b) stiffen the tangent only,
-constexpr double kTangentBandStiffness = 1e-3; // with this fraction of their normal penalty
+constexpr double kTangentBandStiffness = 1e-3; // open points in the tangent band stiffen the tangent with this
+                                               // fraction of their normal penalty (see ContactSettings::tangent_band)
 enum class ContactStatus { kOpen = 0, kStick = 1, kSlip = 2 };
 const char* to_string(ContactKind kind);
 const char* to_string(ContactStatus status);
@@ -45,6 +45,7 @@ struct ContactPoint {
   double weight = 1;               // line: Gauss weight x reference half length (mm); point: 1
   double radius_a = 0, radius_b = 0;
   double gap_offset = 0;           // subtracted from the gap: the reference overlap (<= 0) or 0
+  double tangent_band = 0;         // mm: open points closer than this add stiffness to the tangent only
   PenaltyStiffness stiffness;
   double mu1 = 0, mu2 = 0;         // along the strand axis projected on the contact plane, and across
   ContactHistory history;

@@ -396,7 +396,7 @@ class CaseParser {
   void parse_contact(const YAML::Node& node) {
     reader_.check_keys(node, "contact", {"enabled", "friction", "friction_pairs", "friction_zones", "orthotropy_ratio",
                                          "normal_factor", "tangential_factor", "normal_multiplier", "tangential_multiplier",
-                                         "search_margin", "line_contact_angle", "line_points", "initial_overlap", "touch_tolerance", "axis"});
+                                         "search_margin", "line_contact_angle", "line_points", "initial_overlap", "touch_tolerance", "tangent_band", "axis"});
     ContactSettings& c = out_.model.contact_settings;
     c.enabled = node["enabled"] ? reader_.boolean(node["enabled"], "contact.enabled") : true;
     auto friction = [&](const YAML::Node& n, const std::string& path) {
@@ -449,6 +449,10 @@ class CaseParser {
     if (node["touch_tolerance"]) {
       c.touch_tolerance = reader_.non_negative(node["touch_tolerance"], "contact.touch_tolerance", "fraction of r_a + r_b");
       if (c.touch_tolerance >= 0.5) reader_.fail(node["touch_tolerance"], "contact.touch_tolerance", "expected a fraction of the radius sum below 0.5");
+    }
+    if (node["tangent_band"]) {
+      c.tangent_band = reader_.non_negative(node["tangent_band"], "contact.tangent_band", "fraction of r_a + r_b");
+      if (c.tangent_band >= 0.5) reader_.fail(node["tangent_band"], "contact.tangent_band", "expected a fraction of the radius sum below 0.5");
     }
     if (node["initial_overlap"])
       c.initial_overlap = reader_.choice(node["initial_overlap"], "contact.initial_overlap", {"offset", "keep"}) == "offset"
@@ -512,7 +516,7 @@ CaseDefinition load_case(const std::string& path) {
                            {"normal_multiplier", k.normal_multiplier}, {"tangential_multiplier", k.tangential_multiplier},
                            {"search_margin", k.search_margin}, {"line_contact_angle", k.line_contact_angle},
                            {"line_points", k.line_points},
-                           {"initial_overlap", k.initial_overlap == InitialOverlap::kOffset ? "offset" : "keep"}, {"touch_tolerance", k.touch_tolerance},
+                           {"initial_overlap", k.initial_overlap == InitialOverlap::kOffset ? "offset" : "keep"}, {"touch_tolerance", k.touch_tolerance}, {"tangent_band", k.tangent_band},
                            {"pairs", k.pair_friction.size()}, {"zones", k.zone_friction.size()}};
   return c;
 }
