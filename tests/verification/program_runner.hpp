@@ -2,6 +2,8 @@
 #pragma once
 #include <cstdlib>
 #include <filesystem>
+#include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -40,7 +42,7 @@ inline ProgramRun run_case(const std::string& case_file, const std::string& tag,
   return run_program("run " + case_path(case_file) + " -q -o " + results.string() + " " + extra, tag);
 }
 
-// CSV as a list of rows keyed by column name.
+// CSV as a list of rows keyed by column name; text fields (kind, status) read as NaN, see read_csv_text.
 inline std::vector<std::map<std::string, double>> read_csv(const std::filesystem::path& file) {
   std::ifstream in(file);
   std::string line;
@@ -53,10 +55,33 @@ inline std::vector<std::map<std::string, double>> read_csv(const std::filesystem
     std::stringstream fields(line);
     std::map<std::string, double> row;
     std::size_t k = 0;
-    for (std::string v; std::getline(fields, v, ',') && k < names.size(); ++k) row[names[k]] = std::stod(v);
+    for (std::string v; std::getline(fields, v, ',') && k < names.size(); ++k) {
+      char* end = nullptr;
+      const double x = std::strtod(v.c_str(), &end);
+      row[names[k]] = (end != v.c_str() && *end == '\0') ? x : std::nan("");
+    }
     rows.push_back(row);
   }
   return rows;
+}
+
+// One text column of a CSV file, row by row.
+inline std::vector<std::string> read_csv_text(const std::filesystem::path& file, const std::string& column) {
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line);
+  std::stringstream header(line);
+  int index = -1, k = 0;
+  for (std::string name; std::getline(header, name, ','); ++k)
+    if (name == column) index = k;
+  std::vector<std::string> values;
+  while (index >= 0 && std::getline(in, line)) {
+    std::stringstream fields(line);
+    std::string v;
+    for (int i = 0; i <= index; ++i) std::getline(fields, v, ',');
+    values.push_back(v);
+  }
+  return values;
 }
 
 }  // namespace strandfem::verification

@@ -200,10 +200,21 @@ class CaseParser {
       const YAML::Node links = reader_.require(node[i], path, "links");
       if (!links.IsSequence() || links.size() == 0) reader_.fail(links, path + ".links", "expected a list of beam node selectors");
       for (std::size_t k = 0; k < links.size(); ++k) {
-        const int slave = node_at(links[k], at(path + ".links", k));
-        for (const RigidTie& t : out_.model.ties)
-          if (t.slave == slave) reader_.fail(links[k], at(path + ".links", k), "node already linked to a hub");
-        out_.model.ties.push_back(make_rigid_tie(slave, hub_node, m.nodes[slave].reference, m.nodes[hub_node].reference));
+        // {beam: name} alone links every node of the line (a rigid line); otherwise one node selector.
+        std::vector<int> slaves;
+        if (links[k].IsMap() && links[k].size() == 1 && links[k]["beam"]) {
+          const std::string beam = reader_.text(links[k]["beam"], at(path + ".links", k) + ".beam");
+          for (const MeshWire& w : m.wires)
+            if (w.name == beam) slaves = w.nodes;
+          if (slaves.empty()) reader_.fail(links[k]["beam"], at(path + ".links", k) + ".beam", "no beam named '" + beam + "'");
+        } else {
+          slaves.push_back(node_at(links[k], at(path + ".links", k)));
+        }
+        for (const int slave : slaves) {
+          for (const RigidTie& t : out_.model.ties)
+            if (t.slave == slave) reader_.fail(links[k], at(path + ".links", k), "node already linked to a hub");
+          out_.model.ties.push_back(make_rigid_tie(slave, hub_node, m.nodes[slave].reference, m.nodes[hub_node].reference));
+        }
       }
     }
   }

@@ -24,7 +24,10 @@ HistoryRow history_row(const CaseDefinition& c, const StaticAnalysis& analysis, 
   row.iterations = report.iterations;
   row.residual_norm = report.residual_norm;
   const auto& f = analysis.internal_forces();
-  if (c.monitor_node >= 0) row.monitor_displacement = displacement(analysis, c.monitor_node);
+  if (c.monitor_node >= 0) {
+    row.monitor_displacement = displacement(analysis, c.monitor_node);
+    row.monitor_force = Vec3(f[6 * c.monitor_node], f[6 * c.monitor_node + 1], f[6 * c.monitor_node + 2]);
+  }
   // Loaded nodes: those carrying a force action in any step.
   Vec3 applied = Vec3::Zero();
   std::vector<bool> loaded(c.model.mesh.nodes.size(), false);
@@ -69,16 +72,17 @@ ResultWriter::ResultWriter(std::filesystem::path directory, const CaseDefinition
   history_.open(directory_ / "history.csv");
   if (!history_) throw std::runtime_error("cannot write " + (directory_ / "history.csv").string());
   history_ << "step,increment,load_factor,axial_strain,axial_force_N,torque_Nmm,end_rotation_rad,transverse_load_N,"
-              "midspan_deflection_mm,monitor_ux_mm,monitor_uy_mm,monitor_uz_mm,newton_iterations,residual_norm\n";
+              "midspan_deflection_mm,monitor_ux_mm,monitor_uy_mm,monitor_uz_mm,newton_iterations,residual_norm,monitor_fx_N,monitor_fy_N,monitor_fz_N\n";
 }
 
 void ResultWriter::on_increment(const StaticAnalysis& analysis, const IncrementReport& report) {
   const HistoryRow r = history_row(case_, analysis, report);
   rows_.push_back(r);
-  history_ << fmt::format("{},{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{},{:.4e}\n",
+  history_ << fmt::format("{},{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{},{:.4e},{:.10g},{:.10g},{:.10g}\n",
                           r.step, r.increment, r.load_factor, r.axial_strain, r.axial_force, r.torque, r.end_rotation,
                           r.transverse_load, r.midspan_deflection, r.monitor_displacement.x(), r.monitor_displacement.y(),
-                          r.monitor_displacement.z(), r.iterations, r.residual_norm);
+                          r.monitor_displacement.z(), r.iterations, r.residual_norm, r.monitor_force.x(), r.monitor_force.y(),
+                          r.monitor_force.z());
   history_.flush();
   ++increments_seen_;
   contacts_.on_increment(analysis, report, increments_seen_, r.load_factor);

@@ -18,6 +18,7 @@ struct HistoryRow {
   double load_factor = 0, axial_strain = 0, axial_force = 0, torque = 0, end_rotation = 0;
   double transverse_load = 0, midspan_deflection = 0;
   Vec3 monitor_displacement = Vec3::Zero();
+  Vec3 monitor_force = Vec3::Zero();  // internal force at the monitor node: the reaction where it is driven
   int iterations = 0;
   double residual_norm = 0;
 };

@@ -15,7 +15,7 @@ StaticAnalysis::StaticAnalysis(Model& model) : model_(model) {
   model_.contacts.initialize(model_.mesh, model_.contact_settings);
   assembler_ = std::make_unique<Assembler>(model_, dofs_);
   solver_ = make_linear_solver(model_.options.linear_solver);
-  solver_->analyze(assembler_->pattern());
+  if (dofs_.equation_count > 0) solver_->analyze(assembler_->pattern());  // all DOFs driven: nothing to factor
   for (const MeshNode& n : model_.mesh.nodes) state_.push_back(n.reference);
   committed_state_ = state_;
   // Scales that keep the convergence test meaningful when the reference load is zero.
@@ -152,7 +152,7 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
         if (model_.contacts.commit(model_.mesh, state_)) {
           // Contact found new element pairs: the tangent's pattern grows and is analyzed again.
           assembler_ = std::make_unique<Assembler>(model_, dofs_);
-          solver_->analyze(assembler_->pattern());
+          if (dofs_.equation_count > 0) solver_->analyze(assembler_->pattern());  // all DOFs driven: nothing to factor
         }
         committed_state_ = state_;
         committed_motion_ = applied_motion_;

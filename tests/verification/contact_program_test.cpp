@@ -1,0 +1,126 @@
+// Requirement: frictional beam-to-beam contact through the program against closed forms (penalty limit,
+// uniform line load, Coulomb stick/slip and its hysteresis loop, orthotropic friction) and the paper's
+// 7-wire strand (Costello's linear theory, Table 2 contact forces, mesh and contact pair counts).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "program_runner.hpp"
+#include "strandfem/io/case_file.hpp"
+#include "strandfem/post/analytic.hpp"
+
+namespace strandfem::verification {
+namespace {
+
+// Rows of history.csv at the end of each step (1-based step -> row).
+std::map<int, std::map<std::string, double>> step_ends(const std::vector<std::map<std::string, double>>& rows) {
+  std::map<int, std::map<std::string, double>> ends;
+  for (const auto& r : rows) ends[static_cast<int>(r.at("step"))] = r;
+  return ends;
+}
+
+TEST(ContactProgram, CrossingWiresPenaltyLimitAndOrthotropicFriction) {
+  const ProgramRun run = run_case("cases/verification/crossing_wires_contact.yaml", "crossing");
+  ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
+  const auto rows = read_csv(run.output / "results" / "history.csv");
+  const double normal_stiffness = 1.0 * 200000 * 3.0 * 10.0;  // eq. 2.5: fKn E d xi_n, N/mm
+  // Press: force proportional to the approach (4 increments), the penalty limit.
+  for (int i = 0; i < 4; ++i)
+    EXPECT_NEAR(-rows[i].at("monitor_fx_N"), normal_stiffness * -rows[i].at("monitor_ux_mm"), 1e-9 * normal_stiffness);
+  const auto ends = step_ends(rows);
+  const double P = -ends.at(1).at("monitor_fx_N"), mu1 = 0.2, mu2 = 0.1;
+  EXPECT_NEAR(P, 2400.0, 1e-6);
+  EXPECT_NEAR(ends.at(2).at("monitor_fz_N"), mu1 * P, 1e-6 * P);   // sliding along the axis: mu1 P
+  EXPECT_NEAR(ends.at(3).at("monitor_fz_N"), -mu1 * P, 1e-6 * P);  // reversed
+  EXPECT_NEAR(ends.at(4).at("monitor_fy_N"), mu2 * P, 1e-6 * P);   // across the axis: mu2 P
+  EXPECT_NEAR(ends.at(4).at("monitor_fz_N"), 0.0, 1e-6 * P);
+  const auto kinds = read_csv_text(run.output / "results" / "contacts.csv", "kind");
+  ASSERT_FALSE(kinds.empty());
+  for (const auto& k : kinds) EXPECT_EQ(k, "point");
+}
+
+TEST(ContactProgram, ParallelWiresLineLoadStickSlipAndHysteresis) {
+  const ProgramRun run = run_case("cases/verification/parallel_wires_friction.yaml", "parallel");
+  ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
+  const auto rows = read_csv(run.output / "results" / "history.csv");
+  const double E = 200000, d = 3, mu = 0.2, slave_length = 20, h = 20.0 / 3.0, approach = 1e-4;
+  const double line_normal = 1.0 * E * 10.0;                         // N/mm^2
+  const double line_tangential = 0.05 * mu * E * d * 3.75 / h;      // fKt mu E d xi_t / h, N/mm^2
+  const double P = line_normal * approach * slave_length, k = line_tangential * slave_length, Q = mu * P;
+  const auto ends = step_ends(rows);
+  EXPECT_NEAR(-ends.at(1).at("monitor_fx_N"), P, 1e-6 * P);
+  // Uniform line load at every Gauss point at the end of the press step.
+  const auto contacts = read_csv(run.output / "results" / "contacts.csv");
+  int pressed = 0;
+  for (const auto& c : contacts)
+    if (c.at("step") == 0 && c.at("increment") == 2) {
+      EXPECT_NEAR(c.at("normal_force"), line_normal * approach, 1e-6 * line_normal * approach);
+      ++pressed;
+    }
+  EXPECT_EQ(pressed, 3 * 4);  // 3 slave elements x 4 Gauss points
+  // Pull: elastic stick with stiffness k until Q = mu P, then sliding at mu P.
+  double area = 0, previous_u = 0, previous_f = 0;
+  bool first = true;
+  for (const auto& r : rows) {
+    const int step = static_cast<int>(r.at("step"));
+    const double u = r.at("monitor_uz_mm"), f = r.at("monitor_fz_N");
+    if (step == 2) {
+      const double expected = std::min(k * u, Q);
+      EXPECT_NEAR(f, expected, 2e-3 * Q) << "u = " << u;
+    }
+    if (step >= 3) {
+      if (!first) area += 0.5 * (f + previous_f) * (u - previous_u);
+      first = false;
+    }
+    if (step == 2 || step >= 3) previous_u = u, previous_f = f;
+  }
+  // One closed cycle between +a and -a: the elastic-perfectly-plastic loop area 4 Q (a - Q / k).
+  const double a = 0.02, expected_area = 4.0 * Q * (a - Q / k);
+  EXPECT_NEAR(std::abs(area), expected_area, 0.03 * expected_area);
+  EXPECT_NEAR(ends.at(3).at("monitor_fz_N"), -Q, 1e-6 * Q);
+  EXPECT_NEAR(ends.at(4).at("monitor_fz_N"), Q, 1e-6 * Q);
+}
+
+// The 7-wire strand of Table 1, fixed ends, mu = 0.115, to 0.008 axial strain.
+TEST(ContactProgram, SevenWireFixedEndsAgainstCostelloAndTable2) {
+  const ProgramRun run = run_case("cases/paper/seven_wire_fixed.yaml", "seven_fixed");
+  ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
+  const CaseDefinition c = load_case(case_path("cases/paper/seven_wire_fixed.yaml"));
+  const double costello = linear_strand_stiffness(*c.strand).axial_fixed();
+  const auto rows = read_csv(run.output / "results" / "history.csv");
+  ASSERT_FALSE(rows.empty());
+  EXPECT_NEAR(rows.back().at("axial_strain"), 0.008, 1e-12);
+  const double slope = rows.back().at("axial_force_N") / rows.back().at("axial_strain");
+  EXPECT_NEAR(slope / costello, 1.0, 0.03);
+  // Table 2: core-wire contact force per unit length, away from the end zones (50 <= z <= 150 mm).
+  const auto table = read_csv(std::filesystem::path(STRANDFEM_SOURCE_DIR) / "tests/verification/data/table2_core_wire_contact_force.csv");
+  const auto contacts = read_csv(run.output / "results" / "contacts.csv");
+  int compared = 0;
+  for (const auto& t : table) {
+    const double strain = t.at("axial_strain");
+    if (strain > 0.008 + 1e-9) continue;
+    int increment = -1;
+    for (const auto& r : rows)
+      if (std::abs(r.at("axial_strain") - strain) < 1e-9) increment = static_cast<int>(r.at("increment"));
+    ASSERT_GT(increment, 0) << "no converged increment at strain " << strain;
+    double sum = 0;
+    int count = 0;
+    for (const auto& p : contacts)
+      if (p.at("increment") == increment && p.at("wire_b") == 0 && p.at("z_mm") >= 50 && p.at("z_mm") <= 150)
+        sum += p.at("normal_force"), ++count;
+    ASSERT_GT(count, 0);
+    EXPECT_NEAR(sum / count / t.at("p_ref_jiang_henshall_N_per_mm"), 1.0, 0.10) << "strain " << strain;
+    ++compared;
+  }
+  EXPECT_EQ(compared, 4);
+  const nlohmann::json summary = nlohmann::json::parse(std::ifstream(run.output / "results" / "summary.json"));
+  EXPECT_EQ(summary["elements"], 168);
+  EXPECT_EQ(summary["nodes"], 343);
+  EXPECT_EQ(summary["contacts"]["lateral_pairs"], 288);  // the paper's 288 contact pairs
+  EXPECT_EQ(summary["contacts"]["radial_pairs"], 0);
+}
+
+}  // namespace
+}  // namespace strandfem::verification
