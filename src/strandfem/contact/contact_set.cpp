@@ -83,9 +83,9 @@ void ContactSet::initialize(const Mesh& mesh, const ContactSettings& settings) {
   wire_pair_kind_.clear();
   searches_ = 0;
   if (!settings_.enabled) return;
-  std::vector<NodeState> reference;
-  for (const MeshNode& n : mesh.nodes) reference.push_back(n.reference);
-  search(mesh, reference);
+  reference_.clear();
+  for (const MeshNode& n : mesh.nodes) reference_.push_back(n.reference);
+  search(mesh, reference_);
   responses_.assign(points_.size(), ContactResponse{});
 }
 
@@ -213,9 +213,7 @@ void ContactSet::add_crossing(const Mesh& mesh, int element_a, int element_b, do
     if (q.kind == ContactKind::kPoint && q.wire_a == p.wire_a && q.wire_b == p.wire_b &&
         std::abs(wire_coordinate(q.element_a, q.xi) - sa) < 0.5 && std::abs(wire_coordinate(q.element_b, q.eta) - sb) < 0.5)
       return;  // the same crossing, already tracked
-  std::vector<NodeState> reference;
-  for (const MeshNode& n : mesh.nodes) reference.push_back(n.reference);
-  set_point_properties(mesh, p, to_vec(centerline_point(centerline(mesh, reference, element_a), xi)));
+  set_point_properties(mesh, p, to_vec(centerline_point(centerline(mesh, reference_, element_a), xi)));
   p.gap_offset = initial_offset(mesh, p);
   points_.push_back(p);
   responses_.resize(points_.size());
@@ -228,8 +226,7 @@ double ContactSet::initial_offset(const Mesh& mesh, const ContactPoint& p) const
 }
 
 double ContactSet::reference_gap(const Mesh& mesh, const ContactPoint& p) const {
-  std::vector<NodeState> reference;
-  for (const MeshNode& n : mesh.nodes) reference.push_back(n.reference);
+  const std::vector<NodeState>& reference = reference_;
   const double radii = p.radius_a + p.radius_b;
   if (p.kind == ContactKind::kPoint) {
     double xi = p.xi, eta = p.eta;

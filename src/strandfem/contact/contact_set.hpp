@@ -66,6 +66,7 @@ class ContactSet {
   std::map<std::pair<int, int>, int> group_of_;             // (slave mesh element, wire b) -> group
   std::map<std::pair<int, int>, ContactKind> wire_pair_kind_;  // (lower wire, higher wire)
   std::vector<std::pair<int, int>> element_pairs_;
+  std::vector<NodeState> reference_;  // the mesh's stress-free state (overlap offsets are measured there)
   std::vector<Vec3> searched_positions_;
   int searches_ = 0;
 };
