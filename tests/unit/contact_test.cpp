@@ -165,18 +165,29 @@ TEST(ContactForceLaw, SlipForceLiesOnTheFrictionEllipse) {
   EXPECT_NEAR(std::hypot(r.q1 / p.mu1, r.q2 / p.mu2), r.normal_force, 1e-9 * r.normal_force);
 }
 
+// Two straight parallel steel wires (d = 2 mm) along z: "master" on the axis, "slave" at x = offset.
+Mesh parallel_lines(int master_elements, int slave_elements, double length, double offset) {
+  Mesh mesh;
+  mesh.sections.push_back(std::make_unique<ElasticSection>(SectionGeometry::circle(2.0, 0.3), ElasticMaterial{200000, 0.3, 0, "steel"}));
+  auto line = [length](double x) {
+    return [x, length](double t) { return std::make_pair(Vec3(x, 0, t * length), Mat3::Identity()); };
+  };
+  mesh.add_line("master", -1, 0, 0, master_elements, line(0.0));
+  mesh.add_line("slave", -1, 1, 0, slave_elements, line(offset));
+  return mesh;
+}
+
+std::vector<NodeState> reference_state(const Mesh& mesh) {
+  std::vector<NodeState> state;
+  for (const MeshNode& n : mesh.nodes) state.push_back(n.reference);
+  return state;
+}
+
 // Two straight parallel wires (slave 2 elements, master 3 elements, so foot points cross master element
 // ends) pressed together: the line load must integrate to p L exactly, without loss or double counting.
 TEST(ContactSet, ParallelWiresCarryTheUniformLineLoad) {
-  Mesh mesh;
-  const ElasticMaterial steel{200000, 0.3, 0, "steel"};
-  mesh.sections.push_back(std::make_unique<ElasticSection>(SectionGeometry::circle(2.0, 0.3), steel));
   const double length = 30, offset = 1.95;
-  auto line = [&](double x) {
-    return [x, length](double t) { return std::make_pair(Vec3(x, 0, t * length), Mat3::Identity()); };
-  };
-  mesh.add_line("master", -1, 0, 0, 3, line(0.0));
-  mesh.add_line("slave", -1, 1, 0, 2, line(offset));
+  const Mesh mesh = parallel_lines(3, 2, length, offset);
   ContactSettings settings;
   settings.enabled = true;
   settings.initial_overlap = InitialOverlap::kKeep;
@@ -184,10 +195,10 @@ TEST(ContactSet, ParallelWiresCarryTheUniformLineLoad) {
   contacts.initialize(mesh, settings);
   EXPECT_EQ(contacts.lateral_pair_count(), 2);
   EXPECT_EQ(contacts.radial_point_count(), 0);
-  std::vector<NodeState> state;
-  for (const MeshNode& n : mesh.nodes) state.push_back(n.reference);
+  const std::vector<NodeState> state = reference_state(mesh);
   contacts.evaluate(mesh, state, false);
-  const double line_stiffness = settings.normal_factor * steel.youngs_modulus * settings.normal_multiplier;  // fKn E xi_n
+  const double youngs_modulus = 200000;
+  const double line_stiffness = settings.normal_factor * youngs_modulus * settings.normal_multiplier;  // fKn E xi_n
   const double pressure = line_stiffness * (2.0 - offset);
   Vec3 on_master = Vec3::Zero();
   for (std::size_t i = 0; i < contacts.points().size(); ++i) {
@@ -201,18 +212,12 @@ TEST(ContactSet, ParallelWiresCarryTheUniformLineLoad) {
 }
 
 TEST(ContactSet, InitialOverlapIsOffset) {
-  Mesh mesh;
-  const ElasticMaterial steel{200000, 0.3, 0, "steel"};
-  mesh.sections.push_back(std::make_unique<ElasticSection>(SectionGeometry::circle(2.0, 0.3), steel));
-  auto line = [](double x) { return [x](double t) { return std::make_pair(Vec3(x, 0, 20 * t), Mat3::Identity()); }; };
-  mesh.add_line("master", -1, 0, 0, 2, line(0.0));
-  mesh.add_line("slave", -1, 1, 0, 2, line(1.9));
+  const Mesh mesh = parallel_lines(2, 2, 20, 1.9);
   ContactSettings settings;
   settings.enabled = true;
   ContactSet contacts;
   contacts.initialize(mesh, settings);
-  std::vector<NodeState> state;
-  for (const MeshNode& n : mesh.nodes) state.push_back(n.reference);
+  std::vector<NodeState> state = reference_state(mesh);
   contacts.evaluate(mesh, state, false);
   // Touching with no force: the 0.1 mm nominal overlap is taken out.
   for (const ContactResponse& r : contacts.responses()) EXPECT_NEAR(r.normal_force, 0.0, 1e-6);
@@ -241,8 +246,7 @@ TEST(ContactSet, RadialCrossingsMatchEquation24) {
   settings.enabled = true;
   ContactSet contacts;
   contacts.initialize(mesh, settings);
-  std::vector<NodeState> reference;
-  for (const MeshNode& n : mesh.nodes) reference.push_back(n.reference);
+  const std::vector<NodeState> reference = reference_state(mesh);
   for (int layer = 2; layer < static_cast<int>(strand.layers.size()); ++layer) {
     int total = 0, interior = 0;
     for (const ContactPoint& p : contacts.points()) {
