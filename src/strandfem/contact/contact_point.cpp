@@ -70,6 +70,8 @@ ContactResponse evaluate_contact(const ContactPoint& point, const ElementCenterl
   r.q2 = f.q2;
   r.tangential_gap = Vec3(f.tangential_gap[0], f.tangential_gap[1], f.tangential_gap[2]);
   r.slip_ratio = f.slip_ratio;
+  r.friction = Vec3(f.friction[0], f.friction[1], f.friction[2]);
+  r.trial_friction = Vec3(f.trial_friction[0], f.trial_friction[1], f.trial_friction[2]);
   for (int i = 0; i < 6; ++i)
     for (int c = 0; c < 3; ++c) r.force[3 * i + c] = f.nodal[i][c];
   if (!with_tangent) return r;

@@ -49,6 +49,17 @@ struct ContactPoint {
   PenaltyStiffness stiffness;
   double mu1 = 0, mu2 = 0;         // along the strand axis projected on the contact plane, and across
   ContactHistory history;
+  // Working active set of the current increment (not history). An active point keeps its penalty force
+  // P = -k_n g even when the gap opens (tension) until Newton has converged; only then are tensile points
+  // released. Without it, wires lifted off by an iteration's second-order motion fall through in the next.
+  bool active = false;
+  bool released = false;           // released once in this increment: no longer made active again
+  // Same for friction: a point that slipped in an iteration keeps slipping, in the direction it started
+  // with, until Newton has converged; then points whose trial force lies inside the cone return to stick
+  // and points whose trial force turned get the new direction. Stops stick/slip and direction cycling.
+  bool sliding = false;
+  bool stuck = false;              // returned to stick once in this increment: no longer made sliding
+  V3<double> sliding_direction{0.0, 0.0, 0.0};  // unit, spatial: direction of the friction force on the slave
 };
 
 // Result of evaluating one contact point at a given state.
@@ -62,7 +73,9 @@ struct ContactResponse {
   Vec3 position = Vec3::Zero();    // contact point on the master surface
   double q1 = 0, q2 = 0;           // friction on the slave along directions 1 and 2: N or N/mm
   Vec3 tangential_gap = Vec3::Zero();  // elastic + trial slip vector of the slave relative to the master, mm
-  double slip_ratio = 1;           // P / ||Q_trial||_mu when slipping, 1 when sticking
+  double slip_ratio = 1;           // P / ||Q_trial||_mu (> 1: the trial lies inside the friction cone)
+  Vec3 friction = Vec3::Zero();        // friction force on the slave: N or N/mm
+  Vec3 trial_friction = Vec3::Zero();  // the elastic trial -k_t g_T
   bool tangent_only = false;       // open, but within the tangent band (see kTangentBand)
   Eigen::Matrix<double, 18, 1> force = Eigen::Matrix<double, 18, 1>::Zero();  // internal forces, 6 nodes x 3
   Eigen::Matrix<double, 18, 18> tangent = Eigen::Matrix<double, 18, 18>::Zero();
@@ -75,7 +88,7 @@ template <class T>
 struct ContactForces {
   std::array<V3<T>, 6> nodal;
   T gap{}, normal_force{}, q1{}, q2{};
-  V3<T> normal{}, tangential_gap{};
+  V3<T> normal{}, tangential_gap{}, trial_friction{}, friction{};
   ContactStatus status = ContactStatus::kOpen;
   double slip_ratio = 1;
 };
@@ -101,7 +114,7 @@ ContactForces<T> contact_forces(const ContactPoint& point, const ElementCenterli
   out.gap = distance - (point.radius_a + point.radius_b) - point.gap_offset;
   // Touching (gap 0 to round-off, as every offset point is at the start) counts as closed: the first
   // Newton iteration then sees the contact stiffness instead of letting wires fly through each other.
-  if (value_of(out.gap) > kContactActivation * (point.radius_a + point.radius_b)) return out;
+  if (!point.active && value_of(out.gap) > kContactActivation * (point.radius_a + point.radius_b)) return out;
   const V3<T>& n = out.normal;
   out.status = ContactStatus::kStick;
   out.normal_force = -point.stiffness.normal * out.gap;
@@ -120,16 +133,36 @@ ContactForces<T> contact_forces(const ContactPoint& point, const ElementCenterli
     out.q1 = dot(trial, d1);
     out.q2 = dot(trial, d2);
     const T measure2 = (out.q1 / point.mu1) * (out.q1 / point.mu1) + (out.q2 / point.mu2) * (out.q2 / point.mu2);
+    out.trial_friction = trial;
+    out.slip_ratio = value_of(measure2) > 0.0 ? value_of(out.normal_force) / std::sqrt(value_of(measure2)) : 1e300;
     V3<T> friction = trial;
-    if (value_of(measure2) > value_of(out.normal_force) * value_of(out.normal_force)) {
+    const double pressure = value_of(out.normal_force);
+    // Sliding within this increment: the force keeps the direction the slip started with (projected on
+    // the current contact plane), Q = P d / |d|_mu. Smooth, unlike P Q_tr / |Q_tr|_mu, whose direction
+    // turns over when Q_tr passes near zero and sets Newton cycling; checked at convergence.
+    const V3<T> frozen{T(point.sliding_direction[0]), T(point.sliding_direction[1]), T(point.sliding_direction[2])};
+    const V3<T> d = sub(frozen, scale(dot(n, frozen), n));
+    const T d_1 = dot(d, d1), d_2 = dot(d, d2);
+    const T d_measure2 = (d_1 / point.mu1) * (d_1 / point.mu1) + (d_2 / point.mu2) * (d_2 / point.mu2);
+    if (point.sliding && value_of(d_measure2) > 1e-12) {
+      const T scale_mu = out.normal_force / sqrt(d_measure2);
+      friction = scale(scale_mu, d);
+      out.q1 = scale_mu * d_1;
+      out.q2 = scale_mu * d_2;
+      out.status = ContactStatus::kSlip;
+    } else if (pressure <= 0.0) {
+      // An active point in tension (only during Newton iterations) carries no friction.
+      friction = {T(0.0), T(0.0), T(0.0)};
+      out.q1 = out.q2 = T(0.0);
+    } else if (value_of(measure2) > pressure * pressure) {
       // Slip: radial return onto the ellipse (Q1/mu1)^2 + (Q2/mu2)^2 = P^2, keeping the trial direction.
       const T ratio = out.normal_force / sqrt(measure2);
-      out.slip_ratio = value_of(ratio);
       friction = scale(ratio, trial);
       out.q1 = ratio * out.q1;
       out.q2 = ratio * out.q2;
       out.status = ContactStatus::kSlip;
     }
+    out.friction = friction;
     total = add(total, friction);
   }
   // Internal force = minus the contact force acting on the node; weight turns per-length into force.

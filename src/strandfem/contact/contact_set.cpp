@@ -11,6 +11,8 @@ namespace strandfem {
 namespace {
 
 constexpr double kRangeTolerance = 1e-9;
+constexpr double kSlidingDirectionTolerance = 0.99;  // cosine between assumed and trial slip directions
+constexpr double kReleaseTolerance = 1e-3;           // relative tension / cone excess tolerated at convergence
 
 ElementCenterline<double> centerline(const Mesh& mesh, const std::vector<NodeState>& state, int element) {
   ElementCenterline<double> x;
@@ -304,6 +306,60 @@ std::array<int, 6> ContactSet::nodes_of(const Mesh& mesh, int index) const {
   return {na[0], na[1], na[2], nb[0], nb[1], nb[2]};
 }
 
+void ContactSet::begin_increment() {
+  for (ContactPoint& p : points_) {
+    p.active = p.history.closed;
+    p.released = false;
+    p.sliding = false;
+    p.stuck = false;
+  }
+}
+
+void ContactSet::activate_closed() {
+  for (std::size_t i = 0; i < points_.size(); ++i)
+  {
+    if (responses_[i].status != ContactStatus::kOpen && !points_[i].released) points_[i].active = true;
+    const Vec3& q = responses_[i].friction;
+    if (responses_[i].status == ContactStatus::kSlip && !points_[i].stuck && !points_[i].sliding && q.norm() > 0) {
+      points_[i].sliding = true;
+      points_[i].sliding_direction = {q.x() / q.norm(), q.y() / q.norm(), q.z() / q.norm()};
+    }
+  }
+}
+
+int ContactSet::release_tensile() {
+  // Tolerances relative to the largest contact force of each kind: a tension of 1e-12 N/mm is zero, and
+  // releasing it only makes the point chatter about g = 0.
+  double largest[2] = {0, 0};
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    double& l = largest[points_[i].kind == ContactKind::kLine];
+    l = std::max(l, std::abs(responses_[i].normal_force));
+  }
+  int released = 0;
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    ContactPoint& p = points_[i];
+    const double tension_tolerance = kReleaseTolerance * largest[p.kind == ContactKind::kLine];
+    if (p.active && responses_[i].status != ContactStatus::kOpen && responses_[i].normal_force < -tension_tolerance) {
+      p.active = false;
+      p.released = true;
+      ++released;
+    } else if (p.sliding && responses_[i].slip_ratio > 1.0 + kReleaseTolerance) {
+      p.sliding = false;
+      p.stuck = true;
+      ++released;
+    } else if (p.sliding) {
+      // Still sliding: the trial force's direction must agree with the one assumed.
+      const Vec3 trial = responses_[i].trial_friction.normalized();
+      const Vec3 assumed(p.sliding_direction[0], p.sliding_direction[1], p.sliding_direction[2]);
+      if (trial.dot(assumed) < kSlidingDirectionTolerance) {
+        p.sliding_direction = {trial.x(), trial.y(), trial.z()};
+        ++released;
+      }
+    }
+  }
+  return released;
+}
+
 bool ContactSet::commit(const Mesh& mesh, const std::vector<NodeState>& state) {
   if (!settings_.enabled) return false;
   evaluate(mesh, state, false);
@@ -311,7 +367,7 @@ bool ContactSet::commit(const Mesh& mesh, const std::vector<NodeState>& state) {
     ContactPoint& p = points_[i];
     const ContactResponse& r = responses_[i];
     ContactHistory& h = p.history;
-    if (r.status == ContactStatus::kOpen) {
+    if (r.status == ContactStatus::kOpen || !(r.normal_force > 0)) {
       // An opened contact forgets its stick point; the slip it accumulated stays on record.
       h.closed = false;
       h.slip_since_reversal = 0;

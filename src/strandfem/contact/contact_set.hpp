@@ -35,6 +35,14 @@ class ContactSet {
   // Mesh nodes a0, a1, a2, b0, b1, b2 of a point as last evaluated (b: the master element used).
   std::array<int, 6> nodes_of(const Mesh& mesh, int point) const;
 
+  // Active set (see ContactPoint::active). begin_increment: the points closed at the last converged state;
+  // activate_closed, after each residual: every closed point stays active for the increment;
+  // release_tensile, once Newton has converged: drops active points in tension and returns sliding points
+  // whose trial force lies inside the friction cone to stick; returns how many changed.
+  void begin_increment();
+  void activate_closed();
+  int release_tensile();
+
   // Converged increment at `state`: writes histories (stick points, slip), moves crossings to the
   // neighbouring element, re-runs the search when nodes moved more than half the margin. Returns true
   // when the set of coupled element pairs changed (the tangent's pattern must be rebuilt).

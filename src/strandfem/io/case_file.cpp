@@ -393,13 +393,14 @@ class CaseParser {
 
   void parse_solver(const YAML::Node& node) {
     reader_.check_keys(node, "solver", {"force_tolerance", "moment_tolerance", "displacement_tolerance", "max_iterations",
-                                        "max_cutbacks", "linear_solver", "threads"});
+                                        "max_cutbacks", "line_search_cuts", "linear_solver", "threads"});
     SolverOptions& o = out_.model.options;
     if (node["force_tolerance"]) o.force_tolerance = reader_.positive(node["force_tolerance"], "solver.force_tolerance", "-");
     if (node["moment_tolerance"]) o.moment_tolerance = reader_.positive(node["moment_tolerance"], "solver.moment_tolerance", "-");
     if (node["displacement_tolerance"]) o.displacement_tolerance = reader_.positive(node["displacement_tolerance"], "solver.displacement_tolerance", "-");
     if (node["max_iterations"]) o.max_iterations = reader_.integer(node["max_iterations"], "solver.max_iterations", 1);
     if (node["max_cutbacks"]) o.max_cutbacks = reader_.integer(node["max_cutbacks"], "solver.max_cutbacks", 0);
+    if (node["line_search_cuts"]) o.line_search_cuts = reader_.integer(node["line_search_cuts"], "solver.line_search_cuts", 0);
     if (node["linear_solver"]) o.linear_solver = reader_.choice(node["linear_solver"], "solver.linear_solver", {"mumps", "umfpack"});
     if (node["threads"]) o.threads = reader_.integer(node["threads"], "solver.threads", 0);
   }
@@ -519,6 +520,7 @@ CaseDefinition load_case(const std::string& path) {
                           {"displacement_tolerance", c.model.options.displacement_tolerance},
                           {"max_iterations", c.model.options.max_iterations},
                           {"max_cutbacks", c.model.options.max_cutbacks},
+                          {"line_search_cuts", c.model.options.line_search_cuts},
                           {"linear_solver", c.model.options.linear_solver},
                           {"threads", c.model.options.threads}};
   const ContactSettings& k = c.model.contact_settings;

@@ -13,6 +13,7 @@ void SolverOptions::validate() const {
   positive(moment_tolerance, "moment_tolerance");
   positive(displacement_tolerance, "displacement_tolerance");
   if (max_iterations < 1) throw std::invalid_argument("solver.max_iterations must be >= 1");
+  if (line_search_cuts < 0 || line_search_cuts > 20) throw std::invalid_argument("solver.line_search_cuts must be in 0..20");
   if (max_cutbacks < 0) throw std::invalid_argument("solver.max_cutbacks must be >= 0");
   if (threads < 0) throw std::invalid_argument("solver.threads must be >= 0");
   if (linear_solver != "mumps" && linear_solver != "umfpack")

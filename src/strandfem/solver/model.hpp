@@ -18,6 +18,7 @@ struct SolverOptions {
   double displacement_tolerance = 0.005;  // ||last correction|| / ||increment displacement||
   int max_iterations = 25;                // Newton iterations per increment before a cut-back
   int max_cutbacks = 8;                   // successive halvings of an increment before giving up
+  int line_search_cuts = 0;               // halvings of a Newton correction that raises the residual
   std::string linear_solver = "mumps";    // mumps | umfpack
   int threads = 0;                        // OpenMP threads for element evaluation; 0 = OpenMP default
   void validate() const;                  // throws std::invalid_argument naming the bad option

@@ -54,12 +54,17 @@ bool StaticAnalysis::solve_increment(double step_fraction,
     else s.rotation = (quaternion_from_rotation_vector(delta * Vec3::Unit(key.component - 3)) * s.rotation).normalized();
   }
   update_slaves();
+  model_.contacts.begin_increment();
   const int n = dofs_.equation_count;
   std::vector<double> rhs(n);
   double increment_displacement2 = 0;
   last_correction2_ = 0;
-  for (int iteration = 0; iteration <= opt.max_iterations; ++iteration) {
-    // Residual first: the (costly) tangent is only assembled when another correction is needed.
+  struct Residual {
+    double relative = 0;
+    bool forces_ok = false;
+  };
+  // Residual at the current state: rhs = -residual on free DOFs, the relative norm and the force test.
+  auto evaluate_residual = [&]() {
     assembler_->assemble(model_, state_, internal_forces_, nullptr);
     double free_force2 = 0, free_moment2 = 0, ref_force2 = 0, ref_moment2 = 0;
     for (std::size_t node = 0; node < node_count; ++node) {
@@ -80,19 +85,52 @@ bool StaticAnalysis::solve_increment(double step_fraction,
     // only by moments (or only by forces) still has a meaningful scale for both residuals.
     const double force_ref = std::max({std::sqrt(ref_force2), std::sqrt(ref_moment2) / length_scale_, force_floor_});
     const double moment_ref = std::max(std::sqrt(ref_moment2), force_ref * length_scale_);
-    const double relative = std::max(std::sqrt(free_force2) / force_ref, std::sqrt(free_moment2) / moment_ref);
-    report.residual_history.push_back(relative);
-    report.residual_norm = relative;
+    Residual r;
+    r.relative = std::max(std::sqrt(free_force2) / force_ref, std::sqrt(free_moment2) / moment_ref);
+    r.forces_ok = std::sqrt(free_force2) <= opt.force_tolerance * force_ref &&
+                  std::sqrt(free_moment2) <= opt.moment_tolerance * moment_ref;
+    return r;
+  };
+  // state_ = start + alpha * correction (spins for rotations); returns the squared correction norm.
+  std::vector<NodeState> start;
+  std::vector<double> correction;
+  auto apply_correction = [&](double alpha) {
+    state_ = start;
+    double norm2 = 0;
+    for (std::size_t node = 0; node < node_count; ++node) {
+      if (dofs_.tie_of[node] >= 0) continue;
+      Vec3 du = Vec3::Zero(), dtheta = Vec3::Zero();
+      for (int c = 0; c < 6; ++c) {
+        const int eq = dofs_.equation[node][c];
+        if (eq < 0) continue;
+        (c < 3 ? du[c] : dtheta[c - 3]) = alpha * correction[eq];
+      }
+      norm2 += du.squaredNorm() + length_scale_ * length_scale_ * dtheta.squaredNorm();
+      state_[node].position += du;
+      state_[node].rotation = (quaternion_from_rotation_vector(dtheta) * state_[node].rotation).normalized();
+    }
+    update_slaves();
+    return norm2;
+  };
+  Residual current = evaluate_residual();
+  model_.contacts.activate_closed();
+  for (int iteration = 0;; ++iteration) {
+    report.residual_history.push_back(current.relative);
+    report.residual_norm = current.relative;
     report.iterations = iteration;
     if (on_progress) on_progress(report);
-    if (!std::isfinite(relative)) return false;
-    const bool forces_ok = std::sqrt(free_force2) <= opt.force_tolerance * force_ref &&
-                           std::sqrt(free_moment2) <= opt.moment_tolerance * moment_ref;
+    if (!std::isfinite(current.relative)) return false;
     // Displacement criterion: the last correction is small against the increment's motion (rotations
     // weighted by the mean element length).
-    if (forces_ok && (iteration == 0 || last_correction2_ <= opt.displacement_tolerance *
-                                                                opt.displacement_tolerance * increment_displacement2))
-      return true;
+    if (current.forces_ok && (iteration == 0 || last_correction2_ <= opt.displacement_tolerance *
+                                                                         opt.displacement_tolerance * increment_displacement2)) {
+      // Converged for this active set; contacts left in tension open and Newton goes on without them.
+      if (model_.contacts.release_tensile() == 0) return true;
+      if (iteration == opt.max_iterations) return false;
+      current = evaluate_residual();
+      model_.contacts.activate_closed();
+      continue;
+    }
     if (iteration == opt.max_iterations) return false;
     assembler_->assemble(model_, state_, internal_forces_, &values_);
     try {
@@ -101,20 +139,20 @@ bool StaticAnalysis::solve_increment(double step_fraction,
     } catch (const LinearSolverError&) {
       return false;
     }
-    last_correction2_ = 0;
-    for (std::size_t node = 0; node < node_count; ++node) {
-      if (dofs_.tie_of[node] >= 0) continue;
-      Vec3 du = Vec3::Zero(), dtheta = Vec3::Zero();
-      for (int c = 0; c < 6; ++c) {
-        const int eq = dofs_.equation[node][c];
-        if (eq < 0) continue;
-        (c < 3 ? du[c] : dtheta[c - 3]) = rhs[eq];
-      }
-      last_correction2_ += du.squaredNorm() + length_scale_ * length_scale_ * dtheta.squaredNorm();
-      state_[node].position += du;
-      state_[node].rotation = (quaternion_from_rotation_vector(dtheta) * state_[node].rotation).normalized();
+    start = state_;
+    correction = rhs;
+    // Backtracking: while the full correction raises the residual (contact switching, stick/slip, large
+    // rotations), halve it, at most opt.line_search_cuts times; the last try is kept either way.
+    double alpha = 1;
+    last_correction2_ = apply_correction(alpha);
+    Residual trial = evaluate_residual();
+    for (int cut = 0; cut < opt.line_search_cuts && !(trial.relative <= current.relative); ++cut) {
+      alpha *= 0.5;
+      last_correction2_ = apply_correction(alpha);
+      trial = evaluate_residual();
     }
-    update_slaves();
+    current = trial;
+    model_.contacts.activate_closed();
     increment_displacement2 = 0;
     for (std::size_t node = 0; node < node_count; ++node) {
       const Vec3 rotation = rotation_vector_from_quaternion(state_[node].rotation * committed_state_[node].rotation.conjugate());
