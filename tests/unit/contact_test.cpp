@@ -153,6 +153,26 @@ TEST(ContactTangent, LineContactStickSlipOrthotropic) {
   EXPECT_LT(tangent_error(p, x, axis, ContactStatus::kSlip), 1e-6);
 }
 
+// Held friction states (within an increment, see ContactPoint::friction_mode) are smooth force laws with
+// exact tangents too; a held slip keeps the magnitude on the ellipse in its held direction.
+TEST(ContactTangent, HeldStickAndHeldSlip) {
+  PairFixture f(0.5, 1.8);
+  const Vector18 x = pack(f);
+  const Vec3 axis = Vec3(1.0, 0.3, 0.2).normalized();
+  ContactPoint p = make_point(ContactKind::kPoint);
+  p.mu2 = 0.15;
+  set_stick(p, x, 0.2);  // far outside the cone
+  p.friction_mode = FrictionMode::kHeldStick;
+  EXPECT_LT(tangent_error(p, x, axis, ContactStatus::kStick), 1e-6);
+  p.friction_mode = FrictionMode::kHeldSlip;
+  p.slip_direction = {0.6, 0.8, 0.0};
+  EXPECT_LT(tangent_error(p, x, axis, ContactStatus::kSlip), 1e-6);
+  const ContactResponse r = response_at(p, x, false, axis);
+  EXPECT_NEAR(std::hypot(r.q1 / p.mu1, r.q2 / p.mu2), r.normal_force, 1e-9 * r.normal_force);
+  const Vec3 in_plane = (Vec3(0.6, 0.8, 0.0) - r.normal.dot(Vec3(0.6, 0.8, 0.0)) * r.normal).normalized();
+  EXPECT_NEAR(r.friction.normalized().dot(in_plane), 1.0, 1e-12);
+}
+
 TEST(ContactForceLaw, SlipForceLiesOnTheFrictionEllipse) {
   PairFixture f(M_PI / 2, 1.8);
   const Vector18 x = pack(f);

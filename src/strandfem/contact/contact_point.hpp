@@ -16,6 +16,7 @@ constexpr double kContactActivation = 1e-9;  // closed when gap <= this x (r_a +
 constexpr double kTangentBandStiffness = 1e-3; // open points in the tangent band stiffen the tangent with this
                                                // fraction of their normal penalty (see ContactSettings::tangent_band)
 enum class ContactStatus { kOpen = 0, kStick = 1, kSlip = 2 };
+enum class FrictionMode { kFree, kHeldStick, kHeldSlip };  // see ContactPoint::friction_mode
 const char* to_string(ContactKind kind);
 const char* to_string(ContactStatus status);
 
@@ -54,12 +55,12 @@ struct ContactPoint {
   // released. Without it, wires lifted off by an iteration's second-order motion fall through in the next.
   bool active = false;
   bool released = false;           // released once in this increment: no longer made active again
-  // Same for friction: a point that slipped in an iteration keeps slipping, in the direction it started
-  // with, until Newton has converged; then points whose trial force lies inside the cone return to stick
-  // and points whose trial force turned get the new direction. Stops stick/slip and direction cycling.
-  bool sliding = false;
-  bool stuck = false;              // returned to stick once in this increment: no longer made sliding
-  V3<double> sliding_direction{0.0, 0.0, 0.0};  // unit, spatial: direction of the friction force on the slave
+  // Same for friction: after the first iterate of an increment each closed point is held in the state the
+  // plain law gives it (stick, or slip in a fixed direction) while Newton converges; then ContactSet
+  // switches the points whose trial force disagrees and Newton goes on. Stops stick/slip cycling.
+  FrictionMode friction_mode = FrictionMode::kFree;
+  int friction_switches = 0;       // switches in this increment; past kMaxFrictionSwitches the plain law
+  V3<double> slip_direction{0.0, 0.0, 0.0};  // held slip: unit direction of the friction force on the slave
 };
 
 // Result of evaluating one contact point at a given state.
@@ -140,16 +141,18 @@ ContactForces<T> contact_forces(const ContactPoint& point, const ElementCenterli
     // Sliding within this increment: the force keeps the direction the slip started with (projected on
     // the current contact plane), Q = P d / |d|_mu. Smooth, unlike P Q_tr / |Q_tr|_mu, whose direction
     // turns over when Q_tr passes near zero and sets Newton cycling; checked at convergence.
-    const V3<T> frozen{T(point.sliding_direction[0]), T(point.sliding_direction[1]), T(point.sliding_direction[2])};
+    const V3<T> frozen{T(point.slip_direction[0]), T(point.slip_direction[1]), T(point.slip_direction[2])};
     const V3<T> d = sub(frozen, scale(dot(n, frozen), n));
     const T d_1 = dot(d, d1), d_2 = dot(d, d2);
     const T d_measure2 = (d_1 / point.mu1) * (d_1 / point.mu1) + (d_2 / point.mu2) * (d_2 / point.mu2);
-    if (point.sliding && value_of(d_measure2) > 1e-12) {
+    if (point.friction_mode == FrictionMode::kHeldSlip && value_of(d_measure2) > 1e-12) {
       const T scale_mu = out.normal_force / sqrt(d_measure2);
       friction = scale(scale_mu, d);
       out.q1 = scale_mu * d_1;
       out.q2 = scale_mu * d_2;
       out.status = ContactStatus::kSlip;
+    } else if (point.friction_mode == FrictionMode::kHeldStick) {
+      // Held in stick: the elastic trial force, whatever the cone says, until convergence.
     } else if (pressure <= 0.0) {
       // An active point in tension (only during Newton iterations) carries no friction.
       friction = {T(0.0), T(0.0), T(0.0)};

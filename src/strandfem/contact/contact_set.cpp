@@ -13,6 +13,7 @@ namespace {
 constexpr double kRangeTolerance = 1e-9;
 constexpr double kSlidingDirectionTolerance = 0.99;  // cosine between assumed and trial slip directions
 constexpr double kReleaseTolerance = 1e-3;           // relative tension / cone excess tolerated at convergence
+constexpr int kMaxFrictionSwitches = 6;              // held friction switches per point and increment
 
 ElementCenterline<double> centerline(const Mesh& mesh, const std::vector<NodeState>& state, int element) {
   ElementCenterline<double> x;
@@ -310,19 +311,26 @@ void ContactSet::begin_increment() {
   for (ContactPoint& p : points_) {
     p.active = p.history.closed;
     p.released = false;
-    p.sliding = false;
-    p.stuck = false;
+    p.friction_mode = FrictionMode::kFree;
+    p.friction_switches = 0;
   }
 }
 
 void ContactSet::activate_closed() {
-  for (std::size_t i = 0; i < points_.size(); ++i)
-  {
-    if (responses_[i].status != ContactStatus::kOpen && !points_[i].released) points_[i].active = true;
-    const Vec3& q = responses_[i].friction;
-    if (responses_[i].status == ContactStatus::kSlip && !points_[i].stuck && !points_[i].sliding && q.norm() > 0) {
-      points_[i].sliding = true;
-      points_[i].sliding_direction = {q.x() / q.norm(), q.y() / q.norm(), q.z() / q.norm()};
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    ContactPoint& p = points_[i];
+    const ContactResponse& r = responses_[i];
+    if (r.status == ContactStatus::kOpen) continue;
+    if (!p.released) p.active = true;
+    if (p.friction_mode != FrictionMode::kFree || !p.history.closed || !(p.mu1 > 0) || !(r.normal_force > 0) ||
+        p.friction_switches >= kMaxFrictionSwitches)
+      continue;
+    if (r.status == ContactStatus::kSlip && r.friction.norm() > 0) {
+      p.friction_mode = FrictionMode::kHeldSlip;
+      const Vec3 d = r.friction.normalized();
+      p.slip_direction = {d.x(), d.y(), d.z()};
+    } else {
+      p.friction_mode = FrictionMode::kHeldStick;
     }
   }
 }
@@ -335,29 +343,43 @@ int ContactSet::release_tensile() {
     double& l = largest[points_[i].kind == ContactKind::kLine];
     l = std::max(l, std::abs(responses_[i].normal_force));
   }
-  int released = 0;
+  int changed = 0;
   for (std::size_t i = 0; i < points_.size(); ++i) {
     ContactPoint& p = points_[i];
-    const double tension_tolerance = kReleaseTolerance * largest[p.kind == ContactKind::kLine];
-    if (p.active && responses_[i].status != ContactStatus::kOpen && responses_[i].normal_force < -tension_tolerance) {
+    const ContactResponse& r = responses_[i];
+    if (r.status == ContactStatus::kOpen) continue;
+    if (p.active && r.normal_force < -kReleaseTolerance * largest[p.kind == ContactKind::kLine]) {
       p.active = false;
       p.released = true;
-      ++released;
-    } else if (p.sliding && responses_[i].slip_ratio > 1.0 + kReleaseTolerance) {
-      p.sliding = false;
-      p.stuck = true;
-      ++released;
-    } else if (p.sliding) {
-      // Still sliding: the trial force's direction must agree with the one assumed.
-      const Vec3 trial = responses_[i].trial_friction.normalized();
-      const Vec3 assumed(p.sliding_direction[0], p.sliding_direction[1], p.sliding_direction[2]);
-      if (trial.dot(assumed) < kSlidingDirectionTolerance) {
-        p.sliding_direction = {trial.x(), trial.y(), trial.z()};
-        ++released;
-      }
+      ++changed;
+      continue;
     }
+    if (p.friction_mode == FrictionMode::kFree || !(r.normal_force > 0)) continue;
+    // Held friction states that the converged trial force contradicts are switched.
+    const Vec3 trial = r.trial_friction.normalized();
+    const Vec3 held(p.slip_direction[0], p.slip_direction[1], p.slip_direction[2]);
+    auto hold_slip = [&] {
+      p.friction_mode = FrictionMode::kHeldSlip;
+      p.slip_direction = {trial.x(), trial.y(), trial.z()};
+    };
+    bool switched = false;
+    if (p.friction_mode == FrictionMode::kHeldStick && r.slip_ratio < 1.0 - kReleaseTolerance) {
+      hold_slip();
+      switched = true;
+    } else if (p.friction_mode == FrictionMode::kHeldSlip &&
+               (r.slip_ratio > 1.0 + kReleaseTolerance || trial.dot(held) < 0.0)) {
+      p.friction_mode = FrictionMode::kHeldStick;  // inside the cone, or the slip would reverse
+      switched = true;
+    } else if (p.friction_mode == FrictionMode::kHeldSlip && trial.dot(held) < kSlidingDirectionTolerance) {
+      hold_slip();  // the slip direction turned (point contacts)
+      switched = true;
+    }
+    if (!switched) continue;
+    ++changed;
+    // A point that keeps switching goes back to the plain law.
+    if (++p.friction_switches >= kMaxFrictionSwitches) p.friction_mode = FrictionMode::kFree;
   }
-  return released;
+  return changed;
 }
 
 bool ContactSet::commit(const Mesh& mesh, const std::vector<NodeState>& state) {

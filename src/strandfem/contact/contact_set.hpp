@@ -35,10 +35,11 @@ class ContactSet {
   // Mesh nodes a0, a1, a2, b0, b1, b2 of a point as last evaluated (b: the master element used).
   std::array<int, 6> nodes_of(const Mesh& mesh, int point) const;
 
-  // Active set (see ContactPoint::active). begin_increment: the points closed at the last converged state;
-  // activate_closed, after each residual: every closed point stays active for the increment;
-  // release_tensile, once Newton has converged: drops active points in tension and returns sliding points
-  // whose trial force lies inside the friction cone to stick; returns how many changed.
+  // Active set and held friction states (see ContactPoint::active, ::friction_mode). begin_increment: the
+  // points closed at the last converged state are active, friction is free; activate_closed, after each
+  // accepted iterate: closed points become active and hold their stick/slip state; release_tensile, once
+  // Newton has converged: releases points in tension and switches held friction states that the trial
+  // force contradicts; returns how many changed (0: the increment has converged).
   void begin_increment();
   void activate_closed();
   int release_tensile();
