@@ -122,5 +122,22 @@ TEST(ContactProgram, SevenWireFixedEndsAgainstCostelloAndTable2) {
   EXPECT_EQ(summary["contacts"]["radial_pairs"], 0);
 }
 
+// The same strand with free ends (end z = L untwists): slope within 5 % of Costello's free-end stiffness
+// and the end rotation against Costello's twist beta = -C21 eps / C22 over the length.
+TEST(ContactProgram, SevenWireFreeEndsAgainstCostello) {
+  const ProgramRun run = run_case("cases/paper/seven_wire_free.yaml", "seven_free");
+  ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
+  const CaseDefinition c = load_case(case_path("cases/paper/seven_wire_free.yaml"));
+  const LinearStrandStiffness k = linear_strand_stiffness(*c.strand);
+  const auto rows = read_csv(run.output / "results" / "history.csv");
+  ASSERT_FALSE(rows.empty());
+  const double strain = rows.back().at("axial_strain");
+  EXPECT_NEAR(strain, 0.008, 1e-12);
+  EXPECT_NEAR(rows.back().at("axial_force_N") / strain / k.axial_free(), 1.0, 0.05);
+  const double costello_rotation = k.twist_per_strain_free() * strain * c.strand->length;
+  EXPECT_NEAR(rows.back().at("end_rotation_rad") / costello_rotation, 1.0, 0.05);
+  EXPECT_NEAR(rows.back().at("torque_Nmm"), 0.0, 1e-3);  // free end: no torque reaction
+}
+
 }  // namespace
 }  // namespace strandfem::verification
