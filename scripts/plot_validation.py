@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""Runs the 7-wire strand of the paper's Table 1 (fixed ends, mu = 0.115) and plots axial load against
-strain beside Costello's linear theory, and the core-wire contact force per length beside Table 2.
+"""Runs the 7-wire strand of the paper's Table 1 (fixed and free ends, mu = 0.115) and plots axial load
+against strain beside Costello's linear theory, and the core-wire contact force per length beside Table 2.
 
 Usage: scripts/plot_validation.py [build/apps/strandfem] -> docs/validation_seven_wire.png and the numbers
 printed for docs/validation.md.
@@ -18,6 +18,10 @@ rows = list(csv.DictReader(open(os.path.join(out, "history.csv"))))
 summary = json.load(open(os.path.join(out, "summary.json")))
 k_fixed = summary["axial_stiffness_N"]["fixed_ends"]
 k_free = summary["axial_stiffness_N"]["free_ends"]
+free_out = "/tmp/strandfem_validation_free"
+subprocess.run([exe, "run", os.path.join(root, "cases/paper/seven_wire_free.yaml"), "-q", "-o", free_out], check=True)
+free_rows = list(csv.DictReader(open(os.path.join(free_out, "history.csv"))))
+free_summary = json.load(open(os.path.join(free_out, "summary.json")))
 strain = [float(r["axial_strain"]) for r in rows]
 force = [float(r["axial_force_N"]) for r in rows]
 table = list(csv.DictReader(open(os.path.join(root, "tests/verification/data/table2_core_wire_contact_force.csv"))))
@@ -36,6 +40,8 @@ fig, (a1, a2) = plt.subplots(1, 2, figsize=(10, 4))
 a1.plot([0, 0.008], [0, k_fixed * 0.008 / 1000], "k-", label="Costello, fixed ends")
 a1.plot([0, 0.008], [0, k_free * 0.008 / 1000], "k--", label="Costello, free ends")
 a1.plot(strain, [f / 1000 for f in force], "o", label="StrandFEM, fixed ends")
+a1.plot([float(r["axial_strain"]) for r in free_rows], [float(r["axial_force_N"]) / 1000 for r in free_rows], "s",
+        markersize=3, label="StrandFEM, free ends")
 a1.set_xlabel("axial strain")
 a1.set_ylabel("axial load (kN)")
 a1.set_title("7-wire strand (Table 1), mu = 0.115")
@@ -58,3 +64,8 @@ for t in table:
         ref, paper = float(t["p_ref_jiang_henshall_N_per_mm"]), float(t["p_paper_beam_model_N_per_mm"])
         print(f"eps {e}: p = {p_model[e]:.1f} N/mm, ref {ref} ({100 * (p_model[e] / ref - 1):+.1f} %), paper {paper} ({100 * (p_model[e] / paper - 1):+.1f} %)")
 print("contacts:", summary["contacts"], "wall", summary["wall_time_s"])
+fe, ff, fr = (float(free_rows[-1][k]) for k in ("axial_strain", "axial_force_N", "end_rotation_rad"))
+twist = free_summary["axial_stiffness_N"]["free_end_twist_rad_per_mm_per_strain"] * fe * 200.0
+print(f"free: slope {ff / fe:.6g} N, Costello free {k_free:.6g} N, ratio {ff / fe / k_free:.5f}; "
+      f"end rotation {fr:.5f} rad, Costello {twist:.5f} rad, ratio {fr / twist:.5f}; "
+      f"{len(free_rows)} increments, wall {free_summary['wall_time_s']:.1f} s")

@@ -77,6 +77,31 @@ void set_stick(ContactPoint& p, const Vector18& x, double offset) {
   p.history.stick_b = wire_coordinate(0, r.eta - 0.7 * offset);
 }
 
+// Friction coefficient lookup: zones over material pairs over the default; pairs in either order.
+TEST(ContactSettings, FrictionPerMaterialPairAndAxialZone) {
+  ContactSettings s;
+  s.friction = 0.1;
+  s.pair_friction = {{"steel", "aluminum", 0.5}};
+  s.zone_friction = {{0.0, 20.0, 0.9}};
+  EXPECT_DOUBLE_EQ(s.friction_at("steel", "steel", 50), 0.1);
+  EXPECT_DOUBLE_EQ(s.friction_at("aluminum", "steel", 50), 0.5);
+  EXPECT_DOUBLE_EQ(s.friction_at("steel", "aluminum", 50), 0.5);
+  EXPECT_DOUBLE_EQ(s.friction_at("steel", "steel", 10), 0.9);
+  EXPECT_DOUBLE_EQ(s.friction_at("steel", "aluminum", 20), 0.9);
+}
+
+// Eqs. 2.5-2.6 as documented: point contacts N/mm, line contacts the same divided by d (N/mm^2).
+TEST(ContactSettings, PenaltyStiffnessFormulas) {
+  ContactSettings s;  // fKn 1, xi_n 10, fKt 50, xi_t 3.75
+  const double E = 188000, d = 3.73, h = 8.5, mu = 0.115;
+  const PenaltyStiffness point = penalty_stiffness(s, false, E, d, h, mu);
+  EXPECT_DOUBLE_EQ(point.normal, E * d * 10);
+  EXPECT_DOUBLE_EQ(point.tangential, 50 * mu * E * d * d * 3.75 / h);
+  const PenaltyStiffness line = penalty_stiffness(s, true, E, d, h, mu);
+  EXPECT_DOUBLE_EQ(line.normal, E * 10);
+  EXPECT_NEAR(line.tangential, point.tangential / d, 1e-9 * line.tangential);
+}
+
 TEST(ContactKinematics, ClosestPointsOfCrossingLines) {
   ElementCenterline<double> a = {V3<double>{-1, 0, 0}, V3<double>{0, 0, 0}, V3<double>{1, 0, 0}};
   ElementCenterline<double> b = {V3<double>{0.3, -1, 2}, V3<double>{0.3, 0, 2}, V3<double>{0.3, 1, 2}};

@@ -74,6 +74,14 @@ TEST(StrandProgram, BadInputGivesExitCode2NamingTheKey) {
       {"bad_end", "ends: fixed", "ends: glued", "strand.ends"},
       {"bad_solver", "steps:", "solver: {linear_solver: magic}\nsteps:", "solver.linear_solver"},
       {"missing_length", "length: 200", "", "strand.length"},
+      {"negative_friction", "steps:", "contact: {friction: -0.1}\nsteps:", "contact.friction"},
+      {"unknown_contact_key", "steps:", "contact: {friction: 0.1, stiffness: 3}\nsteps:", "contact.stiffness"},
+      {"bad_overlap_mode", "steps:", "contact: {initial_overlap: squash}\nsteps:", "contact.initial_overlap"},
+      {"friction_pair_material", "steps:", "contact: {friction_pairs: [{materials: [steel, copper], mu: 0.2}]}\nsteps:",
+       "contact.friction_pairs[0].materials[1]"},
+      {"friction_zone_order", "steps:", "contact: {friction_zones: [{z: [50, 10], mu: 0.2}]}\nsteps:", "contact.friction_zones[0].z"},
+      {"axis_on_strand", "steps:", "contact: {axis: [1, 0, 0]}\nsteps:", "contact.axis"},
+      {"line_points", "steps:", "contact: {line_points: 0}\nsteps:", "contact.line_points"},
   };
   std::ifstream in(case_path("cases/examples/seven_wire_axial.yaml"));
   const std::string base((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
