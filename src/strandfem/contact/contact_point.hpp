@@ -7,6 +7,7 @@
 
 #include "strandfem/contact/contact_kinematics.hpp"
 #include "strandfem/contact/contact_settings.hpp"
+#include "strandfem/contact/friction.hpp"
 #include "strandfem/core/types.hpp"
 
 namespace strandfem {
@@ -15,8 +16,6 @@ enum class ContactKind { kLine, kPoint };
 constexpr double kContactActivation = 1e-9;  // closed when gap <= this x (r_a + r_b)
 constexpr double kTangentBandStiffness = 1e-3; // open points in the tangent band stiffen the tangent with this
                                                // fraction of their normal penalty (see ContactSettings::tangent_band)
-enum class ContactStatus { kOpen = 0, kStick = 1, kSlip = 2 };
-enum class FrictionMode { kFree, kHeldStick, kHeldSlip };  // see ContactPoint::friction_mode
 const char* to_string(ContactKind kind);
 const char* to_string(ContactStatus status);
 
@@ -124,49 +123,15 @@ ContactForces<T> contact_forces(const ContactPoint& point, const ElementCenterli
     // Tangential gap: the stick points' separation projected on the contact plane.
     const V3<T> separation = sub(centerline_point(a, stick_xi), centerline_point(b, stick_eta));
     out.tangential_gap = sub(separation, scale(dot(n, separation), n));
-    const V3<T> trial = scale(-point.stiffness.tangential, out.tangential_gap);
-    // Direction 1: the strand axis projected on the contact plane; direction 2 = direction 1 x n.
-    const V3<T> strand_axis{T(axis[0]), T(axis[1]), T(axis[2])};
-    V3<T> d1 = sub(strand_axis, scale(dot(n, strand_axis), n));
-    const T d1_norm = sqrt(dot(d1, d1));
-    d1 = scale(1.0 / d1_norm, d1);
-    const V3<T> d2 = cross(d1, n);
-    out.q1 = dot(trial, d1);
-    out.q2 = dot(trial, d2);
-    const T measure2 = (out.q1 / point.mu1) * (out.q1 / point.mu1) + (out.q2 / point.mu2) * (out.q2 / point.mu2);
-    out.trial_friction = trial;
-    out.slip_ratio = value_of(measure2) > 0.0 ? value_of(out.normal_force) / std::sqrt(value_of(measure2)) : 1e300;
-    V3<T> friction = trial;
-    const double pressure = value_of(out.normal_force);
-    // Sliding within this increment: the force keeps the direction the slip started with (projected on
-    // the current contact plane), Q = P d / |d|_mu. Smooth, unlike P Q_tr / |Q_tr|_mu, whose direction
-    // turns over when Q_tr passes near zero and sets Newton cycling; checked at convergence.
-    const V3<T> frozen{T(point.slip_direction[0]), T(point.slip_direction[1]), T(point.slip_direction[2])};
-    const V3<T> d = sub(frozen, scale(dot(n, frozen), n));
-    const T d_1 = dot(d, d1), d_2 = dot(d, d2);
-    const T d_measure2 = (d_1 / point.mu1) * (d_1 / point.mu1) + (d_2 / point.mu2) * (d_2 / point.mu2);
-    if (point.friction_mode == FrictionMode::kHeldSlip && value_of(d_measure2) > 1e-12) {
-      const T scale_mu = out.normal_force / sqrt(d_measure2);
-      friction = scale(scale_mu, d);
-      out.q1 = scale_mu * d_1;
-      out.q2 = scale_mu * d_2;
-      out.status = ContactStatus::kSlip;
-    } else if (point.friction_mode == FrictionMode::kHeldStick) {
-      // Held in stick: the elastic trial force, whatever the cone says, until convergence.
-    } else if (pressure <= 0.0) {
-      // An active point in tension (only during Newton iterations) carries no friction.
-      friction = {T(0.0), T(0.0), T(0.0)};
-      out.q1 = out.q2 = T(0.0);
-    } else if (value_of(measure2) > pressure * pressure) {
-      // Slip: radial return onto the ellipse (Q1/mu1)^2 + (Q2/mu2)^2 = P^2, keeping the trial direction.
-      const T ratio = out.normal_force / sqrt(measure2);
-      friction = scale(ratio, trial);
-      out.q1 = ratio * out.q1;
-      out.q2 = ratio * out.q2;
-      out.status = ContactStatus::kSlip;
-    }
-    out.friction = friction;
-    total = add(total, friction);
+    const FrictionLaw law{point.mu1, point.mu2, point.stiffness.tangential, point.friction_mode, point.slip_direction};
+    const FrictionForce<T> f = friction_force(law, n, out.tangential_gap, out.normal_force, axis);
+    out.friction = f.force;
+    out.trial_friction = f.trial;
+    out.q1 = f.q1;
+    out.q2 = f.q2;
+    out.slip_ratio = f.slip_ratio;
+    if (f.slipping) out.status = ContactStatus::kSlip;
+    total = add(total, f.force);
   }
   // Internal force = minus the contact force acting on the node; weight turns per-length into force.
   const auto na = centerline_shape(xi), nb = centerline_shape(eta);
