@@ -297,13 +297,17 @@ void ContactSet::evaluate(const Mesh& mesh, const std::vector<NodeState>& state,
   for (int i = 0; i < count; ++i) responses_[i] = evaluate_point(mesh, state, i, with_tangent);
 }
 
-std::array<int, 6> ContactSet::nodes_of(const Mesh& mesh, int index) const {
+std::pair<int, int> ContactSet::elements_of(const Mesh& mesh, int index) const {
   const ContactPoint& p = points_[index];
   const int element_b = responses_[index].element_b >= 0 ? responses_[index].element_b
                         : p.element_b >= 0                ? p.element_b
                                                           : groups_[p.group].candidates.front();
-  const auto& na = mesh.elements[mesh.wires[p.wire_a].elements[p.element_a]].nodes;
-  const auto& nb = mesh.elements[mesh.wires[p.wire_b].elements[element_b]].nodes;
+  return {mesh.wires[p.wire_a].elements[p.element_a], mesh.wires[p.wire_b].elements[element_b]};
+}
+
+std::array<int, 6> ContactSet::nodes_of(const Mesh& mesh, int index) const {
+  const auto [element_a, element_b] = elements_of(mesh, index);
+  const auto &na = mesh.elements[element_a].nodes, &nb = mesh.elements[element_b].nodes;
   return {na[0], na[1], na[2], nb[0], nb[1], nb[2]};
 }
 

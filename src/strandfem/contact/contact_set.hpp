@@ -34,6 +34,8 @@ class ContactSet {
   const std::vector<ContactResponse>& responses() const { return responses_; }
   // Mesh nodes a0, a1, a2, b0, b1, b2 of a point as last evaluated (b: the master element used).
   std::array<int, 6> nodes_of(const Mesh& mesh, int point) const;
+  // Mesh elements (slave, master) of a point as last evaluated.
+  std::pair<int, int> elements_of(const Mesh& mesh, int point) const;
 
   // Active set and held friction states (see ContactPoint::active, ::friction_mode). begin_increment: the
   // points closed at the last converged state are active, friction is free; activate_closed, after each

@@ -56,6 +56,18 @@ Assembler::Assembler(const Model& model, const DofMap& dofs) : dofs_(dofs) {
     tie_slots_.push_back(slots);
   }
   outputs_.resize(model.mesh.elements.size());
+  const std::int64_t element_count = static_cast<std::int64_t>(model.mesh.elements.size());
+  for (const auto& [e, f] : model.contacts.element_pairs()) {
+    const auto &a = model.mesh.elements[e].nodes, &b = model.mesh.elements[f].nodes;
+    const std::array<int, 6> nodes = {a[0], a[1], a[2], b[0], b[1], b[2]};
+    if (std::any_of(nodes.begin(), nodes.end(), [&](int n) { return dofs.tie_of[n] >= 0; })) continue;
+    contact_pair_[e * element_count + f] = static_cast<int>(contact_slots_.size() / 324);
+    for (int i = 0; i < 18; ++i)
+      for (int j = 0; j < 18; ++j) {
+        const int row = dofs.equation[nodes[i / 3]][i % 3], col = dofs.equation[nodes[j / 3]][j % 3];
+        contact_slots_.push_back(row >= 0 && col >= 0 ? pattern_.find(row, col) : -1);
+      }
+  }
 }
 
 template <int Nodes>
@@ -128,6 +140,20 @@ void Assembler::assemble(Model& model, const std::vector<NodeState>& state, std:
   for (std::size_t i = 0; i < responses.size(); ++i) {
     const ContactResponse& c = responses[i];
     if (c.status == ContactStatus::kOpen && !(with_tangent && c.tangent_only)) continue;
+    const auto [element_a, element_b] = model.contacts.elements_of(model.mesh, static_cast<int>(i));
+    const auto cached = contact_pair_.find(element_a * static_cast<std::int64_t>(element_count) + element_b);
+    if (cached != contact_pair_.end()) {
+      const auto nodes = model.contacts.nodes_of(model.mesh, static_cast<int>(i));
+      for (int a = 0; a < 6; ++a)
+        for (int k = 0; k < 3; ++k) nodal_forces[6 * nodes[a] + k] += c.force[3 * a + k];
+      if (with_tangent) {
+        const int* slots = &contact_slots_[static_cast<std::size_t>(cached->second) * 324];
+        for (int a = 0; a < 18; ++a)
+          for (int b = 0; b < 18; ++b)
+            if (slots[18 * a + b] >= 0) (*values)[slots[18 * a + b]] += c.tangent(a, b);
+      }
+      continue;
+    }
     Eigen::Matrix<double, 36, 1> r = Eigen::Matrix<double, 36, 1>::Zero();
     Eigen::Matrix<double, 36, 36> K = Eigen::Matrix<double, 36, 36>::Zero();
     for (int a = 0; a < 6; ++a) {
