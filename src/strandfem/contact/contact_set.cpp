@@ -11,7 +11,7 @@ namespace strandfem {
 namespace {
 
 constexpr double kRangeTolerance = 1e-9;
-constexpr double kSlidingDirectionTolerance = 0.99;  // cosine between assumed and trial slip directions
+constexpr double kSlidingDirectionTolerance = 1.0 - 1e-10;  // cosine between held and trial slip directions
 constexpr double kReleaseTolerance = 1e-3;           // relative tension / cone excess tolerated at convergence
 constexpr int kMaxFrictionSwitches = 6;              // held friction switches per point and increment
 
@@ -315,8 +315,11 @@ void ContactSet::begin_increment() {
   for (ContactPoint& p : points_) {
     p.active = p.history.closed;
     p.released = false;
-    p.friction_mode = FrictionMode::kFree;
     p.friction_switches = 0;
+    // Loading that goes on in the same sense keeps the slipping points slipping: start from there.
+    p.friction_mode = p.history.closed && p.history.slipping ? FrictionMode::kHeldSlip : FrictionMode::kFree;
+    const Vec3& d = p.history.friction_direction;
+    p.slip_direction = {d.x(), d.y(), d.z()};
   }
 }
 
@@ -375,8 +378,12 @@ int ContactSet::release_tensile() {
       p.friction_mode = FrictionMode::kHeldStick;  // inside the cone, or the slip would reverse
       switched = true;
     } else if (p.friction_mode == FrictionMode::kHeldSlip && trial.dot(held) < kSlidingDirectionTolerance) {
-      hold_slip();  // the slip direction turned (point contacts)
-      switched = true;
+      // The slip direction turned (point contacts): the plain return mapping, exact in direction, for the
+      // rest of the increment (deep in slip it is smooth enough).
+      p.friction_mode = FrictionMode::kFree;
+      p.friction_switches = kMaxFrictionSwitches;
+      ++changed;
+      continue;
     }
     if (!switched) continue;
     ++changed;
@@ -393,9 +400,12 @@ bool ContactSet::commit(const Mesh& mesh, const std::vector<NodeState>& state) {
     ContactPoint& p = points_[i];
     const ContactResponse& r = responses_[i];
     ContactHistory& h = p.history;
+    h.slipping = r.status == ContactStatus::kSlip && r.friction.norm() > 0;
+    if (h.slipping) h.friction_direction = r.friction.normalized();
     if (r.status == ContactStatus::kOpen || !(r.normal_force > 0)) {
       // An opened contact forgets its stick point; the slip it accumulated stays on record.
       h.closed = false;
+      h.slipping = false;
       h.slip_since_reversal = 0;
       h.slip_direction.setZero();
       continue;
