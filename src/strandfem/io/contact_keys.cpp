@@ -1,0 +1,90 @@
+#include "strandfem/io/contact_keys.hpp"
+
+namespace strandfem {
+
+namespace {
+std::string at(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
+
+std::string material_name(const YamlReader& reader, const YAML::Node& node, const std::string& path,
+                          const std::map<std::string, ElasticMaterial>& materials) {
+  const std::string name = reader.text(node, path);
+  if (!materials.count(name)) reader.fail(node, path, "unknown material '" + name + "' (define it under 'materials')");
+  return name;
+}
+}  // namespace
+
+ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Node& node,
+                                       const std::map<std::string, ElasticMaterial>& materials, bool strand) {
+  reader.check_keys(node, "contact", {"enabled", "friction", "friction_pairs", "friction_zones", "orthotropy_ratio",
+                                       "normal_factor", "tangential_factor", "normal_multiplier", "tangential_multiplier",
+                                       "search_margin", "line_contact_angle", "line_points", "initial_overlap", "touch_tolerance", "tangent_band", "axis"});
+  ContactSettings c;
+  c.enabled = node["enabled"] ? reader.boolean(node["enabled"], "contact.enabled") : true;
+  auto friction = [&](const YAML::Node& n, const std::string& path) {
+    const double mu = reader.non_negative(n, path, "-");
+    if (mu >= 10) reader.fail(n, path, "expected a friction coefficient below 10");
+    return mu;
+  };
+  if (node["friction"]) c.friction = friction(node["friction"], "contact.friction");
+  if (const YAML::Node pairs = node["friction_pairs"]) {
+    if (!pairs.IsSequence()) reader.fail(pairs, "contact.friction_pairs", "expected a list of {materials: [a, b], mu}");
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+      const std::string path = at("contact.friction_pairs", i);
+      reader.check_keys(pairs[i], path, {"materials", "mu"});
+      const YAML::Node m = reader.require(pairs[i], path, "materials");
+      if (!m.IsSequence() || m.size() != 2) reader.fail(m, path + ".materials", "expected two material names");
+      MaterialPairFriction f;
+      f.material_a = material_name(reader, m[0], path + ".materials[0]", materials);
+      f.material_b = material_name(reader, m[1], path + ".materials[1]", materials);
+      f.coefficient = friction(reader.require(pairs[i], path, "mu"), path + ".mu");
+      c.pair_friction.push_back(f);
+    }
+  }
+  if (const YAML::Node zones = node["friction_zones"]) {
+    if (!zones.IsSequence()) reader.fail(zones, "contact.friction_zones", "expected a list of {z: [z_min, z_max], mu}");
+    for (std::size_t i = 0; i < zones.size(); ++i) {
+      const std::string path = at("contact.friction_zones", i);
+      reader.check_keys(zones[i], path, {"z", "mu"});
+      const auto z = reader.numbers(reader.require(zones[i], path, "z"), path + ".z", 2);
+      if (!(z[1] > z[0])) reader.fail(zones[i]["z"], path + ".z", "expected [z_min, z_max] with z_max > z_min (mm)");
+      c.zone_friction.push_back({z[0], z[1], friction(reader.require(zones[i], path, "mu"), path + ".mu")});
+    }
+  }
+  auto positive = [&](const char* key, double& value, const char* unit) {
+    if (node[key]) value = reader.positive(node[key], std::string("contact.") + key, unit);
+  };
+  positive("orthotropy_ratio", c.orthotropy_ratio, "-");
+  positive("normal_factor", c.normal_factor, "-");
+  positive("tangential_factor", c.tangential_factor, "-");
+  positive("normal_multiplier", c.normal_multiplier, "-");
+  positive("tangential_multiplier", c.tangential_multiplier, "-");
+  positive("search_margin", c.search_margin, "mm");
+  if (node["line_contact_angle"]) {
+    c.line_contact_angle = reader.positive(node["line_contact_angle"], "contact.line_contact_angle", "degrees");
+    if (c.line_contact_angle >= 90) reader.fail(node["line_contact_angle"], "contact.line_contact_angle", "expected an angle in (0, 90) degrees");
+  }
+  if (node["line_points"]) {
+    c.line_points = reader.integer(node["line_points"], "contact.line_points", 1);
+    if (c.line_points > 10) reader.fail(node["line_points"], "contact.line_points", "expected 1..10 Gauss points per element");
+  }
+  if (node["touch_tolerance"]) {
+    c.touch_tolerance = reader.non_negative(node["touch_tolerance"], "contact.touch_tolerance", "fraction of r_a + r_b");
+    if (c.touch_tolerance >= 0.5) reader.fail(node["touch_tolerance"], "contact.touch_tolerance", "expected a fraction of the radius sum below 0.5");
+  }
+  if (node["tangent_band"]) {
+    c.tangent_band = reader.non_negative(node["tangent_band"], "contact.tangent_band", "fraction of r_a + r_b");
+    if (c.tangent_band >= 0.5) reader.fail(node["tangent_band"], "contact.tangent_band", "expected a fraction of the radius sum below 0.5");
+  }
+  if (node["initial_overlap"])
+    c.initial_overlap = reader.choice(node["initial_overlap"], "contact.initial_overlap", {"offset", "keep"}) == "offset"
+                            ? InitialOverlap::kOffset : InitialOverlap::kKeep;
+  if (node["axis"]) {
+    if (strand) reader.fail(node["axis"], "contact.axis", "strands use their own axis (z); 'axis' is for beam cases");
+    const auto a = reader.numbers(node["axis"], "contact.axis", 3);
+    c.strand_axis = Vec3(a[0], a[1], a[2]);
+    if (!(c.strand_axis.norm() > 0)) reader.fail(node["axis"], "contact.axis", "expected a nonzero direction");
+  }
+  return c;
+}
+
+}  // namespace strandfem
