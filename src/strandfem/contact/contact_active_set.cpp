@@ -10,13 +10,16 @@ namespace strandfem {
 namespace {
 constexpr double kSlidingDirectionTolerance = 1.0 - 1e-10;  // cosine between held and trial slip directions
 constexpr double kReleaseTolerance = 1e-3;           // relative tension / cone excess tolerated at convergence
-constexpr int kMaxFrictionSwitches = 6;              // held friction switches per point and increment
+constexpr int kMaxFrictionSwitches = 6;
+// Releases + re-closings per point and increment; then an active point stays active (a point that keeps
+// opening and closing carries next to no force, and holding it closed stops the chatter).
+constexpr int kMaxNormalSwitches = 4;              // held friction switches per point and increment
 }  // namespace
 
 void ContactSet::begin_increment() {
   for (ContactPoint& p : points_) {
     p.active = p.history.closed;
-    p.released = false;
+    p.normal_switches = 0;
     p.friction_switches = 0;
     // Loading that goes on in the same sense keeps the slipping points slipping: start from there.
     p.friction_mode = p.history.closed && p.history.slipping ? FrictionMode::kHeldSlip : FrictionMode::kFree;
@@ -30,7 +33,10 @@ void ContactSet::activate_closed() {
     ContactPoint& p = points_[i];
     const ContactResponse& r = responses_[i];
     if (r.status == ContactStatus::kOpen) continue;
-    if (!p.released) p.active = true;
+    if (!p.active) {
+      if (p.normal_switches > 0) ++p.normal_switches;  // closed again after a release
+      p.active = true;
+    }
     if (p.friction_mode != FrictionMode::kFree || !p.history.closed || !(p.mu1 > 0) || !(r.normal_force > 0) ||
         p.friction_switches >= kMaxFrictionSwitches)
       continue;
@@ -57,13 +63,16 @@ int ContactSet::release_tensile() {
     ContactPoint& p = points_[i];
     const ContactResponse& r = responses_[i];
     if (r.status == ContactStatus::kOpen) continue;
-    if (p.active && r.normal_force < -kReleaseTolerance * largest[p.kind == ContactKind::kLine]) {
+    if (p.active && r.normal_force < -kReleaseTolerance * largest[p.kind == ContactKind::kLine] &&
+        p.normal_switches < kMaxNormalSwitches) {
       p.active = false;
-      p.released = true;
+      ++p.normal_switches;
       ++changed;
       continue;
     }
-    if (p.friction_mode == FrictionMode::kFree || !(r.normal_force > 0)) continue;
+    // Free points follow the plain law; points out of switches keep their held state (see below).
+    if (p.friction_mode == FrictionMode::kFree || !(r.normal_force > 0) || p.friction_switches >= kMaxFrictionSwitches)
+      continue;
     // Held friction states that the converged trial force contradicts are switched.
     const Vec3 trial = r.trial_friction.normalized();
     const Vec3 held(p.slip_direction[0], p.slip_direction[1], p.slip_direction[2]);
@@ -80,17 +89,15 @@ int ContactSet::release_tensile() {
       p.friction_mode = FrictionMode::kHeldStick;  // inside the cone, or the slip would reverse
       switched = true;
     } else if (p.friction_mode == FrictionMode::kHeldSlip && trial.dot(held) < kSlidingDirectionTolerance) {
-      // The slip direction turned (point contacts): the plain return mapping, exact in direction, for the
-      // rest of the increment (deep in slip it is smooth enough).
-      p.friction_mode = FrictionMode::kFree;
-      p.friction_switches = kMaxFrictionSwitches;
-      ++changed;
-      continue;
+      hold_slip();  // the slip direction turned (point contacts): hold the trial's direction
+      switched = true;
     }
     if (!switched) continue;
     ++changed;
-    // A point that keeps switching goes back to the plain law.
-    if (++p.friction_switches >= kMaxFrictionSwitches) p.friction_mode = FrictionMode::kFree;
+    // A point that has switched kMaxFrictionSwitches times keeps its held state for the rest of the
+    // increment: the plain law would bring back the cycling, and the remaining mismatch is the last
+    // switch's (counted in held_mismatches()).
+    ++p.friction_switches;
   }
   return changed;
 }

@@ -55,7 +55,8 @@ struct ContactPoint {
   // P = -k_n g even when the gap opens (tension) until Newton has converged; only then are tensile points
   // released. Without it, wires lifted off by an iteration's second-order motion fall through in the next.
   bool active = false;
-  bool released = false;           // released once in this increment: no longer made active again
+  int normal_switches = 0;         // releases and re-activations in this increment; past a few, the point
+                                   // keeps its state (a zero-pressure point would chatter about g = 0)
   // Same for friction: after the first iterate of an increment each closed point is held in the state the
   // plain law gives it (stick, or slip in a fixed direction) while Newton converges; then ContactSet
   // switches the points whose trial force disagrees and Newton goes on. Stops stick/slip cycling.

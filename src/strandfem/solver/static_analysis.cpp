@@ -7,6 +7,10 @@
 
 namespace strandfem {
 
+namespace {
+constexpr int kMaxContactRounds = 40;  // contact set changes per increment before a cut-back
+}  // namespace
+
 StaticAnalysis::StaticAnalysis(Model& model) : model_(model) {
   model_.options.validate();
   if (model_.options.threads > 0) omp_set_num_threads(model_.options.threads);
@@ -114,7 +118,10 @@ bool StaticAnalysis::solve_increment(double step_fraction,
   };
   Residual current = evaluate_residual();
   model_.contacts.activate_closed();
-  for (int iteration = 0;; ++iteration) {
+  // Newton iterations count from the last contact change (release or friction switch); the number of such
+  // rounds per increment is capped separately.
+  int since_change = 0, rounds = 0;
+  for (int iteration = 0;; ++iteration, ++since_change) {
     report.residual_history.push_back(current.relative);
     report.residual_norm = current.relative;
     report.iterations = iteration;
@@ -126,12 +133,13 @@ bool StaticAnalysis::solve_increment(double step_fraction,
                                                                          opt.displacement_tolerance * increment_displacement2)) {
       // Converged for this active set; contacts left in tension open and Newton goes on without them.
       if (model_.contacts.release_tensile() == 0) return true;
-      if (iteration == opt.max_iterations) return false;
+      if (++rounds > kMaxContactRounds) return false;
+      since_change = 0;
       current = evaluate_residual();
       model_.contacts.activate_closed();
       continue;
     }
-    if (iteration == opt.max_iterations) return false;
+    if (since_change == opt.max_iterations) return false;
     assembler_->assemble(model_, state_, internal_forces_, &values_);
     try {
       solver_->factorize(values_);
