@@ -52,19 +52,7 @@ ContactResponse evaluate_contact(const ContactPoint& point, const ElementCenterl
   r.normal = Vec3(f.normal[0], f.normal[1], f.normal[2]);
   const V3<double> xb = centerline_point(b, eta);
   r.position = Vec3(xb[0], xb[1], xb[2]) + point.radius_b * r.normal;
-  if (f.status == ContactStatus::kOpen) {
-    // Just open (gap below the band): no force, but the closed-side stiffness goes into the tangent, so
-    // that a wire lifted off by a round-off amount in one iteration does not fall through in the next.
-    if (!with_tangent || !(f.gap < point.tangent_band)) return r;
-    ContactPoint touching = point;
-    touching.tangent_band = 0;
-    touching.gap_offset += f.gap;
-    touching.history.closed = false;  // normal stiffness only
-    touching.stiffness.normal *= kTangentBandStiffness;
-    r.tangent = evaluate_contact(touching, a, b, element_b, xi, eta, axis, true).tangent;
-    r.tangent_only = true;
-    return r;
-  }
+  if (f.status == ContactStatus::kOpen) return r;
   r.normal_force = f.normal_force;
   r.q1 = f.q1;
   r.q2 = f.q2;

@@ -14,8 +14,6 @@ namespace strandfem {
 
 enum class ContactKind { kLine, kPoint };
 constexpr double kContactActivation = 1e-9;  // closed when gap <= this x (r_a + r_b)
-constexpr double kTangentBandStiffness = 1e-3; // open points in the tangent band stiffen the tangent with this
-                                               // fraction of their normal penalty (see ContactSettings::tangent_band)
 const char* to_string(ContactKind kind);
 const char* to_string(ContactStatus status);
 
@@ -47,7 +45,6 @@ struct ContactPoint {
   double weight = 1;               // line: Gauss weight x reference half length (mm); point: 1
   double radius_a = 0, radius_b = 0;
   double gap_offset = 0;           // subtracted from the gap: the reference overlap (<= 0) or 0
-  double tangent_band = 0;         // mm: open points closer than this add stiffness to the tangent only
   PenaltyStiffness stiffness;
   double mu1 = 0, mu2 = 0;         // along the strand axis projected on the contact plane, and across
   ContactHistory history;
@@ -79,7 +76,6 @@ struct ContactResponse {
   double slip_ratio = 1;           // P / ||Q_trial||_mu (> 1: the trial lies inside the friction cone)
   Vec3 friction = Vec3::Zero();        // friction force on the slave: N or N/mm
   Vec3 trial_friction = Vec3::Zero();  // the elastic trial -k_t g_T
-  bool tangent_only = false;       // open, but within the tangent band (see kTangentBand)
   Eigen::Matrix<double, 18, 1> force = Eigen::Matrix<double, 18, 1>::Zero();  // internal forces, 6 nodes x 3
   Eigen::Matrix<double, 18, 18> tangent = Eigen::Matrix<double, 18, 18>::Zero();
 };

@@ -159,7 +159,6 @@ void ContactSet::set_point_properties(const Mesh& mesh, ContactPoint& p, const V
   const Section& sb = *mesh.sections[mesh.wires[p.wire_b].section];
   p.radius_a = sa.geometry().contact_radius;
   p.radius_b = sb.geometry().contact_radius;
-  p.tangent_band = settings_.tangent_band * (p.radius_a + p.radius_b);
   const double modulus = std::min(sa.material().youngs_modulus, sb.material().youngs_modulus);
   const double diameter = 2.0 * std::min(p.radius_a, p.radius_b);
   const int slave_element = mesh.wires[p.wire_a].elements[p.element_a];

@@ -26,7 +26,6 @@ void ContactSettings::validate() const {
   }
   require_positive(orthotropy_ratio, "orthotropy_ratio");
   require_positive(search_margin, "search_margin");
-  if (!(tangent_band >= 0 && tangent_band < 0.5)) throw std::invalid_argument("contact.tangent_band must be in [0, 0.5)");
   if (!(touch_tolerance >= 0 && touch_tolerance < 0.5)) throw std::invalid_argument("contact.touch_tolerance must be in [0, 0.5)");
   if (!(line_contact_angle > 0 && line_contact_angle < 90))
     throw std::invalid_argument("contact.line_contact_angle must be in (0, 90) degrees, got " + std::to_string(line_contact_angle));

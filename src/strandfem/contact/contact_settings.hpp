@@ -51,10 +51,6 @@ struct ContactSettings {
   // With kOffset, reference gaps below this fraction of r_a + r_b are offset too (not only overlaps):
   // the quadratic interpolation of a helix leaves gaps of order 1e-4 mm between wires meant to touch.
   double touch_tolerance = 0.002;
-  // Newton aid: open points with gap below this fraction of r_a + r_b add a small stiffness (1e-3 of the
-  // penalty) to the tangent, not the residual. Wires lifted off by an iteration's second-order motion
-  // (large end rotations) then do not fall through in the next one. 0 gives the exact tangent.
-  double tangent_band = 0.0;
 
   // Throws std::invalid_argument naming the contact.* key that is wrong.
   void validate() const;

@@ -459,7 +459,7 @@ CaseDefinition load_case(const std::string& path) {
                            {"normal_multiplier", k.normal_multiplier}, {"tangential_multiplier", k.tangential_multiplier},
                            {"search_margin", k.search_margin}, {"line_contact_angle", k.line_contact_angle},
                            {"line_points", k.line_points},
-                           {"initial_overlap", k.initial_overlap == InitialOverlap::kOffset ? "offset" : "keep"}, {"touch_tolerance", k.touch_tolerance}, {"tangent_band", k.tangent_band},
+                           {"initial_overlap", k.initial_overlap == InitialOverlap::kOffset ? "offset" : "keep"}, {"touch_tolerance", k.touch_tolerance},
                            {"pairs", k.pair_friction.size()}, {"zones", k.zone_friction.size()}};
   return c;
 }

@@ -17,7 +17,7 @@ ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Nod
                                        const std::map<std::string, ElasticMaterial>& materials, bool strand) {
   reader.check_keys(node, "contact", {"enabled", "friction", "friction_pairs", "friction_zones", "orthotropy_ratio",
                                        "normal_factor", "tangential_factor", "normal_multiplier", "tangential_multiplier",
-                                       "search_margin", "line_contact_angle", "line_points", "initial_overlap", "touch_tolerance", "tangent_band", "axis"});
+                                       "search_margin", "line_contact_angle", "line_points", "initial_overlap", "touch_tolerance", "axis"});
   ContactSettings c;
   c.enabled = node["enabled"] ? reader.boolean(node["enabled"], "contact.enabled") : true;
   auto friction = [&](const YAML::Node& n, const std::string& path) {
@@ -70,10 +70,6 @@ ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Nod
   if (node["touch_tolerance"]) {
     c.touch_tolerance = reader.non_negative(node["touch_tolerance"], "contact.touch_tolerance", "fraction of r_a + r_b");
     if (c.touch_tolerance >= 0.5) reader.fail(node["touch_tolerance"], "contact.touch_tolerance", "expected a fraction of the radius sum below 0.5");
-  }
-  if (node["tangent_band"]) {
-    c.tangent_band = reader.non_negative(node["tangent_band"], "contact.tangent_band", "fraction of r_a + r_b");
-    if (c.tangent_band >= 0.5) reader.fail(node["tangent_band"], "contact.tangent_band", "expected a fraction of the radius sum below 0.5");
   }
   if (node["initial_overlap"])
     c.initial_overlap = reader.choice(node["initial_overlap"], "contact.initial_overlap", {"offset", "keep"}) == "offset"

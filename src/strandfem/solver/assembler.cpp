@@ -139,7 +139,7 @@ void Assembler::assemble(Model& model, const std::vector<NodeState>& state, std:
   const auto& responses = model.contacts.responses();
   for (std::size_t i = 0; i < responses.size(); ++i) {
     const ContactResponse& c = responses[i];
-    if (c.status == ContactStatus::kOpen && !(with_tangent && c.tangent_only)) continue;
+    if (c.status == ContactStatus::kOpen) continue;
     const auto [element_a, element_b] = model.contacts.elements_of(model.mesh, static_cast<int>(i));
     const auto cached = contact_pair_.find(element_a * static_cast<std::int64_t>(element_count) + element_b);
     if (cached != contact_pair_.end()) {
