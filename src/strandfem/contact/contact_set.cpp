@@ -314,6 +314,12 @@ bool ContactSet::commit(const Mesh& mesh, const std::vector<NodeState>& state) {
     ContactPoint& p = points_[i];
     const ContactResponse& r = responses_[i];
     ContactHistory& h = p.history;
+    // Converged parameters (also of open crossings, so that they follow the wires and move on below).
+    if (r.element_b >= 0) {
+      p.xi = r.xi;
+      p.eta = r.eta;
+      p.element_b = r.element_b;
+    }
     h.slipping = r.status == ContactStatus::kSlip && r.friction.norm() > 0;
     if (h.slipping) h.friction_direction = r.friction.normalized();
     if (r.status == ContactStatus::kOpen || !(r.normal_force > 0)) {
@@ -341,9 +347,6 @@ bool ContactSet::commit(const Mesh& mesh, const std::vector<NodeState>& state) {
       h.slip_since_reversal += slip;
       h.slip_direction = direction;
     }
-    p.xi = r.xi;
-    p.eta = r.eta;
-    p.element_b = r.element_b;
   }
   // Crossings that left their element move to the neighbour (parameters re-expressed there).
   for (ContactPoint& p : points_) {
