@@ -71,6 +71,26 @@ double arc_length(const ElementCenterline<double>& x) {
   return length;
 }
 
+// The orthogonal projection of x onto a line group's master wire: the candidate element whose half-open
+// range holds the foot point, nearest first. element = -1 when x projects past the wire's ends.
+struct FootPoint {
+  int element = -1;
+  double eta = 0, distance = 1e300;
+};
+FootPoint project_onto_wire(const Mesh& mesh, const std::vector<NodeState>& state, const LineContactGroup& group,
+                            const V3<double>& x, int guess_element, double guess_eta) {
+  FootPoint best;
+  for (int k : group.candidates) {
+    const auto b = centerline(mesh, state, mesh.wires[group.wire_b].elements[k]);
+    double eta = k == guess_element ? guess_eta : 0.0;
+    if (!project_point(x, b, eta) || !in_range(eta, k)) continue;
+    const V3<double> d = sub(x, centerline_point(b, eta));
+    const double distance = std::sqrt(dot(d, d));
+    if (distance < best.distance) best = {k, eta, distance};
+  }
+  return best;
+}
+
 }  // namespace
 
 void ContactSet::initialize(const Mesh& mesh, const ContactSettings& settings) {
@@ -134,15 +154,17 @@ void ContactSet::search(const Mesh& mesh, const std::vector<NodeState>& state) {
       // Newton from a few starts: from the middle alone it can run to a far stationary point.
       const auto xs = centerline(mesh, state, slave), xm = centerline(mesh, state, master);
       const int ls = local_index(mesh, slave), lm = local_index(mesh, master);
-      for (double start_xi : {0.0, -0.7, 0.7})
-        for (double start_eta : {0.0, -0.7, 0.7}) {
-          double xi = start_xi, eta = start_eta;
-          if (closest_points(xs, xm, xi, eta) && in_range(xi, ls) && in_range(eta, lm)) {
-            add_crossing(mesh, slave, master, xi, eta);
-            goto next_pair;
+      auto find_crossing = [&] {
+        for (double start_xi : {0.0, -0.7, 0.7})
+          for (double start_eta : {0.0, -0.7, 0.7}) {
+            double xi = start_xi, eta = start_eta;
+            if (closest_points(xs, xm, xi, eta) && in_range(xi, ls) && in_range(eta, lm)) {
+              add_crossing(mesh, slave, master, xi, eta);
+              return;
+            }
           }
-        }
-    next_pair:;
+      };
+      find_crossing();
     }
   }
   // Points of new groups once their candidate lists are complete (the overlap offset projects onto them).
@@ -161,13 +183,7 @@ void ContactSet::set_point_properties(const Mesh& mesh, ContactPoint& p, const V
   p.radius_b = sb.geometry().contact_radius;
   const double modulus = std::min(sa.material().youngs_modulus, sb.material().youngs_modulus);
   const double diameter = 2.0 * std::min(p.radius_a, p.radius_b);
-  const int slave_element = mesh.wires[p.wire_a].elements[p.element_a];
-  ElementCenterline<double> x;
-  for (int i = 0; i < 3; ++i) {
-    const Vec3& q = mesh.nodes[mesh.elements[slave_element].nodes[i]].reference.position;
-    x[i] = {q[0], q[1], q[2]};
-  }
-  const double element_size = arc_length(x);
+  const double element_size = arc_length(centerline(mesh, reference_, mesh.wires[p.wire_a].elements[p.element_a]));
   p.mu1 = settings_.friction_at(sa.material().name, sb.material().name, reference_position.dot(settings_.strand_axis));
   p.mu2 = p.mu1 * settings_.orthotropy_ratio;
   p.stiffness = penalty_stiffness(settings_, p.kind == ContactKind::kLine, modulus, diameter, element_size, p.mu1);
@@ -177,11 +193,7 @@ void ContactSet::add_line_points(const Mesh& mesh, int group) {
   const LineContactGroup& g = groups_[group];
   std::vector<double> gp, gw;
   gauss_legendre(settings_.line_points, gp, gw);
-  ElementCenterline<double> x;
-  for (int i = 0; i < 3; ++i) {
-    const Vec3& q = mesh.nodes[mesh.elements[g.slave_element].nodes[i]].reference.position;
-    x[i] = {q[0], q[1], q[2]};
-  }
+  const ElementCenterline<double> x = centerline(mesh, reference_, g.slave_element);
   for (int k = 0; k < settings_.line_points; ++k) {
     ContactPoint p;
     p.kind = ContactKind::kLine;
@@ -236,17 +248,8 @@ double ContactSet::reference_gap(const Mesh& mesh, const ContactPoint& p) const 
     return std::sqrt(dot(d, d)) - radii;
   }
   const LineContactGroup& g = groups_[p.group];
-  const auto a = centerline(mesh, reference, g.slave_element);
-  const V3<double> xa = centerline_point(a, p.xi);
-  double best = 1e300;
-  for (int k : g.candidates) {
-    const auto b = centerline(mesh, reference, mesh.wires[g.wire_b].elements[k]);
-    double eta = 0;
-    if (!project_point(xa, b, eta) || !in_range(eta, k)) continue;
-    const V3<double> d = sub(xa, centerline_point(b, eta));
-    best = std::min(best, std::sqrt(dot(d, d)) - radii);
-  }
-  return best < 1e299 ? best : 0.0;
+  const FootPoint foot = project_onto_wire(mesh, reference, g, centerline_point(centerline(mesh, reference, g.slave_element), p.xi), -1, 0.0);
+  return foot.element >= 0 ? foot.distance - radii : 0.0;
 }
 
 ContactResponse ContactSet::evaluate_point(const Mesh& mesh, const std::vector<NodeState>& state, int index,
@@ -270,20 +273,10 @@ ContactResponse ContactSet::evaluate_point(const Mesh& mesh, const std::vector<N
   }
   const LineContactGroup& g = groups_[p.group];
   const auto a = centerline(mesh, state, g.slave_element);
-  const V3<double> xa = centerline_point(a, p.xi);
-  int best = -1;
-  double best_distance = 1e300, best_eta = 0;
-  for (int k : g.candidates) {
-    const auto b = centerline(mesh, state, mesh.wires[g.wire_b].elements[k]);
-    double eta = k == p.element_b ? p.eta : 0.0;
-    if (!project_point(xa, b, eta) || !in_range(eta, k)) continue;
-    const V3<double> d = sub(xa, centerline_point(b, eta));
-    const double distance = std::sqrt(dot(d, d));
-    if (distance < best_distance) best = k, best_distance = distance, best_eta = eta;
-  }
-  if (best < 0) return open;
-  const auto b = centerline(mesh, state, mesh.wires[g.wire_b].elements[best]);
-  return evaluate_contact(p, a, b, best, p.xi, best_eta, settings_.strand_axis, with_tangent);
+  const FootPoint foot = project_onto_wire(mesh, state, g, centerline_point(a, p.xi), p.element_b, p.eta);
+  if (foot.element < 0) return open;
+  const auto b = centerline(mesh, state, mesh.wires[g.wire_b].elements[foot.element]);
+  return evaluate_contact(p, a, b, foot.element, p.xi, foot.eta, settings_.strand_axis, with_tangent);
 }
 
 void ContactSet::evaluate(const Mesh& mesh, const std::vector<NodeState>& state, bool with_tangent) {
