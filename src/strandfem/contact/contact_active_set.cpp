@@ -23,7 +23,7 @@ void ContactSet::begin_increment() {
     p.friction_switches = 0;
     // Loading that goes on in the same sense keeps the slipping points slipping: start from there.
     p.friction_mode = p.history.closed && p.history.slipping ? FrictionMode::kHeldSlip : FrictionMode::kFree;
-    const Vec3& d = p.history.friction_direction;
+    const Vec3 d = -p.history.slip_direction;  // friction opposes the slip
     p.slip_direction = {d.x(), d.y(), d.z()};
   }
 }

@@ -28,8 +28,8 @@ struct ContactHistory {
   double slip = 0;                 // accumulated slip, mm
   double slip_since_reversal = 0;  // slip since the slip direction last reversed, mm
   Vec3 slip_direction = Vec3::Zero();
-  bool slipping = false;           // slipping at the last converged state, with this friction direction:
-  Vec3 friction_direction = Vec3::Zero();  // the next increment starts by holding that slip
+  bool slipping = false;           // slipping at the last converged state (friction along -slip_direction):
+                                   // the next increment starts by holding that slip
 };
 
 // Fixed data of a contact point plus its committed history. Line points keep xi (their Gauss point) and

@@ -313,8 +313,7 @@ bool ContactSet::commit(const Mesh& mesh, const std::vector<NodeState>& state) {
       p.eta = r.eta;
       p.element_b = r.element_b;
     }
-    h.slipping = r.status == ContactStatus::kSlip && r.friction.norm() > 0;
-    if (h.slipping) h.friction_direction = r.friction.normalized();
+    h.slipping = r.status == ContactStatus::kSlip && r.tangential_gap.norm() > 0;
     if (r.status == ContactStatus::kOpen || !(r.normal_force > 0)) {
       // An opened contact forgets its stick point; the slip it accumulated stays on record.
       h.closed = false;

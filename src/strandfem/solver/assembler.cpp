@@ -113,6 +113,40 @@ void Assembler::scatter(const Model& model, const std::vector<NodeState>& state,
   }
 }
 
+// Contact points act on the translations of their six nodes; sequential, in point order (deterministic).
+void Assembler::add_contacts(const Model& model, const std::vector<NodeState>& state, std::vector<double>& nodal_forces,
+                             std::vector<double>& slave_forces, std::vector<double>* values) {
+  const bool with_tangent = values != nullptr;
+  const std::int64_t element_count = static_cast<std::int64_t>(model.mesh.elements.size());
+  const auto& responses = model.contacts.responses();
+  for (std::size_t i = 0; i < responses.size(); ++i) {
+    const ContactResponse& c = responses[i];
+    if (c.status == ContactStatus::kOpen) continue;
+    const auto nodes = model.contacts.nodes_of(model.mesh, static_cast<int>(i));
+    const auto [element_a, element_b] = model.contacts.elements_of(model.mesh, static_cast<int>(i));
+    const auto cached = contact_pair_.find(element_a * element_count + element_b);
+    if (cached != contact_pair_.end()) {
+      for (int a = 0; a < 6; ++a)
+        for (int k = 0; k < 3; ++k) nodal_forces[6 * nodes[a] + k] += c.force[3 * a + k];
+      if (with_tangent) {
+        const int* slots = &contact_slots_[static_cast<std::size_t>(cached->second) * 324];
+        for (int a = 0; a < 18; ++a)
+          for (int b = 0; b < 18; ++b)
+            if (slots[18 * a + b] >= 0) (*values)[slots[18 * a + b]] += c.tangent(a, b);
+      }
+      continue;
+    }
+    Eigen::Matrix<double, 36, 1> r = Eigen::Matrix<double, 36, 1>::Zero();
+    Eigen::Matrix<double, 36, 36> K = Eigen::Matrix<double, 36, 36>::Zero();
+    for (int a = 0; a < 6; ++a) {
+      r.segment<3>(6 * a) = c.force.segment<3>(3 * a);
+      if (with_tangent)
+        for (int b = 0; b < 6; ++b) K.block<3, 3>(6 * a, 6 * b) = c.tangent.block<3, 3>(3 * a, 3 * b);
+    }
+    scatter<6>(model, state, nodes, r, with_tangent ? &K : nullptr, nodal_forces, slave_forces, values, nullptr);
+  }
+}
+
 void Assembler::assemble(Model& model, const std::vector<NodeState>& state, std::vector<double>& nodal_forces,
                          std::vector<double>* values) {
   const bool with_tangent = values != nullptr;
@@ -135,35 +169,7 @@ void Assembler::assemble(Model& model, const std::vector<NodeState>& state, std:
     scatter<3>(model, state, model.elements[k].nodes(), outputs_[k].residual, with_tangent ? &K : nullptr, nodal_forces,
                slave_forces, values, &element_slots_[static_cast<std::size_t>(k) * 324]);
   }
-  // Contact points act on the translations of their six nodes; sequential, in point order (deterministic).
-  const auto& responses = model.contacts.responses();
-  for (std::size_t i = 0; i < responses.size(); ++i) {
-    const ContactResponse& c = responses[i];
-    if (c.status == ContactStatus::kOpen) continue;
-    const auto [element_a, element_b] = model.contacts.elements_of(model.mesh, static_cast<int>(i));
-    const auto cached = contact_pair_.find(element_a * static_cast<std::int64_t>(element_count) + element_b);
-    if (cached != contact_pair_.end()) {
-      const auto nodes = model.contacts.nodes_of(model.mesh, static_cast<int>(i));
-      for (int a = 0; a < 6; ++a)
-        for (int k = 0; k < 3; ++k) nodal_forces[6 * nodes[a] + k] += c.force[3 * a + k];
-      if (with_tangent) {
-        const int* slots = &contact_slots_[static_cast<std::size_t>(cached->second) * 324];
-        for (int a = 0; a < 18; ++a)
-          for (int b = 0; b < 18; ++b)
-            if (slots[18 * a + b] >= 0) (*values)[slots[18 * a + b]] += c.tangent(a, b);
-      }
-      continue;
-    }
-    Eigen::Matrix<double, 36, 1> r = Eigen::Matrix<double, 36, 1>::Zero();
-    Eigen::Matrix<double, 36, 36> K = Eigen::Matrix<double, 36, 36>::Zero();
-    for (int a = 0; a < 6; ++a) {
-      r.segment<3>(6 * a) = c.force.segment<3>(3 * a);
-      if (with_tangent)
-        for (int b = 0; b < 6; ++b) K.block<3, 3>(6 * a, 6 * b) = c.tangent.block<3, 3>(3 * a, 3 * b);
-    }
-    scatter<6>(model, state, model.contacts.nodes_of(model.mesh, static_cast<int>(i)), r, with_tangent ? &K : nullptr,
-               nodal_forces, slave_forces, values, nullptr);
-  }
+  add_contacts(model, state, nodal_forces, slave_forces, values);
   if (!with_tangent) return;
   // Rotation of the lever arm: d(arm x f)/dtheta_m = f^ arm^ (f: the slave's force, held fixed).
   for (std::size_t t = 0; t < model.ties.size(); ++t) {

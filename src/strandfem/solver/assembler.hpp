@@ -26,6 +26,8 @@ class Assembler {
                 std::vector<double>* values);
 
  private:
+  void add_contacts(const Model& model, const std::vector<NodeState>& state, std::vector<double>& nodal_forces,
+                    std::vector<double>& slave_forces, std::vector<double>* values);
   // Adds a block over `nodes` (6 DOFs each) to the global forces and tangent, moving tied slaves' rows and
   // columns to their masters; tied slaves' forces are also collected for the lever-arm term.
   template <int Nodes>
