@@ -168,7 +168,6 @@ bool StaticAnalysis::solve_increment(double step_fraction,
                                  length_scale_ * length_scale_ * rotation.squaredNorm();
     }
   }
-  return false;
 }
 
 AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementReport&)>& on_increment,
