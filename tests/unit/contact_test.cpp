@@ -10,15 +10,20 @@
 namespace strandfem {
 namespace {
 
-using Vector18 = Eigen::Matrix<double, 18, 1>;
+using Vector36 = Eigen::Matrix<double, 36, 1>;
 
 // Two slightly curved elements: a along x, b crossing it (angle set by `angle`) just above, overlapping.
+// Node rotations differ from node to node so that the section interpolation is exercised.
 struct PairFixture {
-  ElementCenterline<double> a, b;
+  ElementPose<double> a, b;
   PairFixture(double angle, double height) {
-    a = {V3<double>{-1.0, 0.0, 0.0}, V3<double>{0.0, 0.05, 0.02}, V3<double>{1.1, 0.0, 0.0}};
+    a.x = {V3<double>{-1.0, 0.0, 0.0}, V3<double>{0.0, 0.05, 0.02}, V3<double>{1.1, 0.0, 0.0}};
     const double c = std::cos(angle), s = std::sin(angle);
-    b = {V3<double>{-c, -s, height}, V3<double>{0.03, 0.0, height - 0.03}, V3<double>{c, s, height + 0.02}};
+    b.x = {V3<double>{-c, -s, height}, V3<double>{0.03, 0.0, height - 0.03}, V3<double>{c, s, height + 0.02}};
+    for (int i = 0; i < 3; ++i) {
+      a.q[i] = quat_from_rotation_vector(V3<double>{0.1 * i, -0.05, 0.2 + 0.1 * i});
+      b.q[i] = quat_from_rotation_vector(V3<double>{-0.2, 0.1 * i, 0.3 * i});
+    }
   }
 };
 
@@ -36,45 +41,58 @@ ContactPoint make_point(ContactKind kind) {
   return p;
 }
 
-// The response at nodal positions x (18 = a then b), with the parameters solved there.
-ContactResponse response_at(const ContactPoint& p, const Vector18& x, bool tangent, const Vec3& axis) {
-  ElementCenterline<double> a, b;
-  for (int i = 0; i < 3; ++i)
-    for (int c = 0; c < 3; ++c) a[i][c] = x[3 * i + c], b[i][c] = x[9 + 3 * i + c];
+// The poses moved by the increments du (translations) and spins dtheta (6 per node, nodes a0..b2).
+std::array<ElementPose<double>, 2> moved(const PairFixture& f, const Vector36& increment) {
+  std::array<ElementPose<double>, 2> out{f.a, f.b};
+  for (int node = 0; node < 6; ++node) {
+    ElementPose<double>& e = out[node / 3];
+    const int i = node % 3;
+    for (int c = 0; c < 3; ++c) e.x[i][c] += increment[6 * node + c];
+    const V3<double> spin{increment[6 * node + 3], increment[6 * node + 4], increment[6 * node + 5]};
+    e.q[i] = multiply(quat_from_rotation_vector(spin), e.q[i]);
+  }
+  return out;
+}
+
+// The response after the increment, with the parameters solved there.
+ContactResponse response_at(const ContactPoint& p, const PairFixture& f, const Vector36& increment, bool tangent,
+                            const Vec3& axis) {
+  const auto poses = moved(f, increment);
   double xi = p.kind == ContactKind::kLine ? p.xi : 0.0, eta = 0.0;
-  bool ok = p.kind == ContactKind::kLine ? project_point(centerline_point(a, xi), b, eta) : closest_points(a, b, xi, eta);
+  bool ok = p.kind == ContactKind::kLine ? project_point(centerline_point(poses[0].x, xi), poses[1].x, eta)
+                                          : closest_points(poses[0].x, poses[1].x, xi, eta);
   EXPECT_TRUE(ok);
-  return evaluate_contact(p, a, b, 0, xi, eta, axis, tangent);
+  return evaluate_contact(p, poses[0], poses[1], 0, xi, eta, axis, tangent);
+}
+ContactResponse response_at(const ContactPoint& p, const PairFixture& f, bool tangent, const Vec3& axis) {
+  return response_at(p, f, Vector36::Zero(), tangent, axis);
 }
 
-Vector18 pack(const PairFixture& f) {
-  Vector18 x;
-  for (int i = 0; i < 3; ++i)
-    for (int c = 0; c < 3; ++c) x[3 * i + c] = f.a[i][c], x[9 + 3 * i + c] = f.b[i][c];
-  return x;
-}
-
-// Central differences of the force against the exact tangent.
-double tangent_error(const ContactPoint& p, const Vector18& x, const Vec3& axis, ContactStatus expected) {
-  const ContactResponse r = response_at(p, x, true, axis);
+// Central differences of the forces and moments against the exact tangent (translations and spins).
+double tangent_error(const ContactPoint& p, const PairFixture& f, const Vec3& axis, ContactStatus expected) {
+  const ContactResponse r = response_at(p, f, true, axis);
   EXPECT_EQ(r.status, expected);
-  Eigen::Matrix<double, 18, 18> fd;
+  ContactMatrix fd;
   const double h = 1e-6;
-  for (int k = 0; k < 18; ++k) {
-    Vector18 plus = x, minus = x;
-    plus[k] += h;
-    minus[k] -= h;
-    fd.col(k) = (response_at(p, plus, false, axis).force - response_at(p, minus, false, axis).force) / (2 * h);
+  for (int k = 0; k < 36; ++k) {
+    Vector36 plus = Vector36::Zero(), minus = Vector36::Zero();
+    plus[k] = h;
+    minus[k] = -h;
+    fd.col(k) = (response_at(p, f, plus, false, axis).force - response_at(p, f, minus, false, axis).force) / (2 * h);
   }
   return (fd - r.tangent).cwiseAbs().maxCoeff() / r.tangent.cwiseAbs().maxCoeff();
 }
 
-// Stick points offset from the current closest point by `offset` in both parameters.
-void set_stick(ContactPoint& p, const Vector18& x, double offset) {
-  const ContactResponse r = response_at(p, x, false, Vec3::UnitX());
+// Stick points offset from the current contact point by `offset` in both parameters and turned by
+// `turn` (rad) about each wire's section axis 1, as a committed history would hold them.
+void set_stick(ContactPoint& p, const PairFixture& f, double offset, double turn = 0.0) {
+  const ContactResponse r = response_at(p, f, false, Vec3::UnitX());
   p.history.closed = true;
   p.history.stick_a = wire_coordinate(0, r.xi + offset);
   p.history.stick_b = wire_coordinate(0, r.eta - 0.7 * offset);
+  const Eigen::AngleAxisd about_axis(turn, Vec3::UnitX());
+  p.history.stick_direction_a = about_axis * section_direction(f.a, r.xi, -r.normal);
+  p.history.stick_direction_b = about_axis * section_direction(f.b, r.eta, r.normal);
 }
 
 // Friction coefficient lookup: zones over material pairs over the default; pairs in either order.
@@ -134,12 +152,12 @@ TEST(ContactKinematics, ProjectionPastTheEndLeavesTheElement) {
 TEST(ContactForceLaw, PointContactNormalForceIsThePenaltyLimit) {
   PairFixture f(M_PI / 2, 1.85);
   ContactPoint p = make_point(ContactKind::kPoint);
-  const ContactResponse r = response_at(p, pack(f), false, Vec3::UnitX());
+  const ContactResponse r = response_at(p, f, false, Vec3::UnitX());
   ASSERT_EQ(r.status, ContactStatus::kStick);
   EXPECT_NEAR(r.normal_force, -p.stiffness.normal * r.gap, 1e-9);
   // Equal and opposite nodal forces: no net force, and the slave is pushed away from the master.
   Vec3 on_a = Vec3::Zero(), on_b = Vec3::Zero();
-  for (int i = 0; i < 3; ++i) on_a -= r.force.segment<3>(3 * i), on_b -= r.force.segment<3>(9 + 3 * i);
+  for (int i = 0; i < 3; ++i) on_a -= r.force.segment<3>(6 * i), on_b -= r.force.segment<3>(18 + 6 * i);
   EXPECT_NEAR((on_a + on_b).norm(), 0.0, 1e-9);
   EXPECT_NEAR(on_a.norm(), r.normal_force, 1e-9);
   EXPECT_LT(on_a.z(), 0.0);
@@ -149,50 +167,47 @@ TEST(ContactTangent, PointContactFrictionlessStickSlipOrthotropic) {
   const Vec3 axis = Vec3(1.0, 0.3, 0.2).normalized();
   for (double angle : {M_PI / 2, 0.5}) {
     PairFixture f(angle, 1.8);
-    const Vector18 x = pack(f);
-    ContactPoint p = make_point(ContactKind::kPoint);
-    EXPECT_LT(tangent_error(p, x, axis, ContactStatus::kStick), 1e-6) << "frictionless, angle " << angle;
-    set_stick(p, x, 0.005);
-    EXPECT_LT(tangent_error(p, x, axis, ContactStatus::kStick), 1e-6) << "stick, angle " << angle;
-    set_stick(p, x, 0.2);
-    EXPECT_LT(tangent_error(p, x, axis, ContactStatus::kSlip), 1e-6) << "slip, angle " << angle;
+        ContactPoint p = make_point(ContactKind::kPoint);
+    EXPECT_LT(tangent_error(p, f, axis, ContactStatus::kStick), 1e-6) << "frictionless, angle " << angle;
+    set_stick(p, f, 0.005, 0.002);
+    EXPECT_LT(tangent_error(p, f, axis, ContactStatus::kStick), 1e-6) << "stick, angle " << angle;
+    set_stick(p, f, 0.2, 0.1);
+    EXPECT_LT(tangent_error(p, f, axis, ContactStatus::kSlip), 1e-6) << "slip, angle " << angle;
     p.mu2 = 0.1;
-    EXPECT_LT(tangent_error(p, x, axis, ContactStatus::kSlip), 1e-6) << "orthotropic slip, angle " << angle;
+    EXPECT_LT(tangent_error(p, f, axis, ContactStatus::kSlip), 1e-6) << "orthotropic slip, angle " << angle;
   }
 }
 
 TEST(ContactTangent, LineContactStickSlipOrthotropic) {
   // Slave a nearly parallel to master b (5 degrees), side by side.
   PairFixture f(0.09, 0.0);
-  for (auto& n : f.b) n[1] += 1.8;
-  const Vector18 x = pack(f);
+  for (auto& n : f.b.x) n[1] += 1.8;
   const Vec3 axis = Vec3(1.0, 0.1, 0.3).normalized();
   ContactPoint p = make_point(ContactKind::kLine);
   p.xi = 0.33;
-  EXPECT_LT(tangent_error(p, x, axis, ContactStatus::kStick), 1e-6);
-  set_stick(p, x, 0.004);
-  EXPECT_LT(tangent_error(p, x, axis, ContactStatus::kStick), 1e-6);
-  set_stick(p, x, 0.3);
-  EXPECT_LT(tangent_error(p, x, axis, ContactStatus::kSlip), 1e-6);
+  EXPECT_LT(tangent_error(p, f, axis, ContactStatus::kStick), 1e-6);
+  set_stick(p, f, 0.004, -0.002);
+  EXPECT_LT(tangent_error(p, f, axis, ContactStatus::kStick), 1e-6);
+  set_stick(p, f, 0.3, 0.2);
+  EXPECT_LT(tangent_error(p, f, axis, ContactStatus::kSlip), 1e-6);
   p.mu2 = 0.05;
-  EXPECT_LT(tangent_error(p, x, axis, ContactStatus::kSlip), 1e-6);
+  EXPECT_LT(tangent_error(p, f, axis, ContactStatus::kSlip), 1e-6);
 }
 
 // Held friction states (within an increment, see ContactPoint::friction_mode) are smooth force laws with
 // exact tangents too; a held slip keeps the magnitude on the ellipse in its held direction.
 TEST(ContactTangent, HeldStickAndHeldSlip) {
   PairFixture f(0.5, 1.8);
-  const Vector18 x = pack(f);
-  const Vec3 axis = Vec3(1.0, 0.3, 0.2).normalized();
+    const Vec3 axis = Vec3(1.0, 0.3, 0.2).normalized();
   ContactPoint p = make_point(ContactKind::kPoint);
   p.mu2 = 0.15;
-  set_stick(p, x, 0.2);  // far outside the cone
+  set_stick(p, f, 0.2);  // far outside the cone
   p.friction_mode = FrictionMode::kHeldStick;
-  EXPECT_LT(tangent_error(p, x, axis, ContactStatus::kStick), 1e-6);
+  EXPECT_LT(tangent_error(p, f, axis, ContactStatus::kStick), 1e-6);
   p.friction_mode = FrictionMode::kHeldSlip;
   p.slip_direction = {0.6, 0.8, 0.0};
-  EXPECT_LT(tangent_error(p, x, axis, ContactStatus::kSlip), 1e-6);
-  const ContactResponse r = response_at(p, x, false, axis);
+  EXPECT_LT(tangent_error(p, f, axis, ContactStatus::kSlip), 1e-6);
+  const ContactResponse r = response_at(p, f, false, axis);
   EXPECT_NEAR(std::hypot(r.q1 / p.mu1, r.q2 / p.mu2), r.normal_force, 1e-9 * r.normal_force);
   const Vec3 in_plane = (Vec3(0.6, 0.8, 0.0) - r.normal.dot(Vec3(0.6, 0.8, 0.0)) * r.normal).normalized();
   EXPECT_NEAR(r.friction.normalized().dot(in_plane), 1.0, 1e-12);
@@ -200,12 +215,11 @@ TEST(ContactTangent, HeldStickAndHeldSlip) {
 
 TEST(ContactForceLaw, SlipForceLiesOnTheFrictionEllipse) {
   PairFixture f(M_PI / 2, 1.8);
-  const Vector18 x = pack(f);
-  const Vec3 axis = Vec3(1.0, 0.3, 0.2).normalized();
+    const Vec3 axis = Vec3(1.0, 0.3, 0.2).normalized();
   ContactPoint p = make_point(ContactKind::kPoint);
   p.mu2 = 0.12;
-  set_stick(p, x, 0.2);
-  const ContactResponse r = response_at(p, x, false, axis);
+  set_stick(p, f, 0.2);
+  const ContactResponse r = response_at(p, f, false, axis);
   ASSERT_EQ(r.status, ContactStatus::kSlip);
   EXPECT_NEAR(std::hypot(r.q1 / p.mu1, r.q2 / p.mu2), r.normal_force, 1e-9 * r.normal_force);
 }
@@ -250,7 +264,7 @@ TEST(ContactSet, ParallelWiresCarryTheUniformLineLoad) {
     const ContactResponse& r = contacts.responses()[i];
     ASSERT_EQ(r.status, ContactStatus::kStick);
     EXPECT_NEAR(r.normal_force, pressure, 1e-9 * pressure);
-    for (int k = 0; k < 3; ++k) on_master -= r.force.segment<3>(9 + 3 * k);
+    for (int k = 0; k < 3; ++k) on_master -= r.force.segment<3>(18 + 6 * k);
   }
   EXPECT_NEAR(on_master.x(), -pressure * length, 1e-9 * pressure * length);
   EXPECT_NEAR(on_master.y(), 0.0, 1e-9);

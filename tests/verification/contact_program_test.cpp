@@ -83,6 +83,36 @@ TEST(ContactProgram, ParallelWiresLineLoadStickSlipAndHysteresis) {
   EXPECT_NEAR(ends.at(4).at("monitor_fz_N"), Q, 1e-6 * Q);
 }
 
+// Surface kinematics: a wire turned about its own axis on a parallel wire (centerlines held) resists with
+// k_t r^2 theta per unit length while its surface sticks, and mu p r once it slides (and back).
+TEST(ContactProgram, WireTurnedAboutItsAxisStickThenSlideTorque) {
+  const ProgramRun run = run_case("cases/verification/rolling_wire_friction.yaml", "rolling");
+  ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
+  const auto rows = read_csv(run.output / "results" / "history.csv");
+  const double E = 200000, d = 3, r = 1.5, mu = 0.2, slave_length = 20, h = 20.0 / 3.0, approach = 1e-4;
+  const double line_normal = 1.0 * E * 10.0, line_tangential = 0.05 * mu * E * d * 3.75 / h;  // N/mm^2
+  const double P = line_normal * approach * slave_length;
+  const double stick_stiffness = line_tangential * r * r * slave_length, sliding = mu * P * r;  // N mm/rad, N mm
+  int stick = 0, slide = 0;
+  double previous_torque = 0, previous_angle = 0;
+  for (const auto& row : rows) {
+    const int step = static_cast<int>(row.at("step"));
+    const double angle = row.at("end_rotation_rad"), torque = row.at("torque_Nmm");
+    if (step == 2) {
+      const double expected = std::min(stick_stiffness * angle, sliding);
+      EXPECT_NEAR(torque, expected, 1e-3 * sliding) << "theta = " << angle;
+      (expected < sliding ? stick : slide) += 1;
+    }
+    if (step == 3 && previous_torque - torque < 0.99 * stick_stiffness * (previous_angle - angle)) {
+      EXPECT_NEAR(torque, -sliding, 1e-3 * sliding) << "reversed, theta = " << angle;  // unloading: stick, then slide back
+    }
+    previous_torque = torque, previous_angle = angle;
+  }
+  EXPECT_GE(stick, 5);
+  EXPECT_GE(slide, 5);
+  EXPECT_NEAR(rows.back().at("torque_Nmm"), -sliding, 1e-6 * sliding);
+}
+
 // The 7-wire strand of Table 1, fixed ends, mu = 0.115, to 0.008 axial strain.
 TEST(ContactProgram, SevenWireFixedEndsAgainstCostelloAndTable2) {
   const ProgramRun run = run_case("cases/paper/seven_wire_fixed.yaml", "seven_fixed");

@@ -5,12 +5,23 @@
 
 #include "strandfem/core/dual.hpp"
 #include "strandfem/core/rotation.hpp"
+#include "strandfem/core/types.hpp"
 
 namespace strandfem {
 
 // Nodal centerline positions of one 3-node element (end, middle, end).
 template <class T>
 using ElementCenterline = std::array<V3<T>, 3>;
+// Nodal section rotations of one element (map the reference section axes to the current ones).
+template <class T>
+using ElementRotations = std::array<Quat<T>, 3>;
+
+// Centerline and section rotations of one element: what contact needs to place points on the wire surface.
+template <class T>
+struct ElementPose {
+  ElementCenterline<T> x;
+  ElementRotations<T> q;
+};
 
 // x(xi), x'(xi), x''(xi) of the quadratic Lagrange interpolation; xi may be a dual number.
 template <class T, class S>
@@ -38,6 +49,32 @@ V3<T> centerline_curvature(const ElementCenterline<T>& x) {
 template <class S>
 std::array<S, 3> centerline_shape(const S& xi) {
   return {0.5 * xi * (xi - 1.0), 1.0 - xi * xi, 0.5 * xi * (xi + 1.0)};
+}
+
+// Section rotation at xi, interpolated as the beam element does (rotation vectors relative to the middle
+// node, Crisfield & Jelenic): a rigid rotation of the element rotates it exactly.
+template <class T>
+Quat<T> section_rotation(const ElementRotations<T>& q, double xi) {
+  const auto n = centerline_shape(xi);
+  const Quat<T> middle_inverse = conjugate(q[1]);
+  const V3<T> psi = add(scale(n[0], rotation_vector_from_quat(multiply(middle_inverse, q[0]))),
+                        scale(n[2], rotation_vector_from_quat(multiply(middle_inverse, q[2]))));
+  return multiply(q[1], quat_from_rotation_vector(psi));
+}
+
+// R(q) v.
+template <class T>
+V3<T> rotate(const Quat<T>& q, const V3<T>& v) {
+  const auto R = rotation_matrix(q);
+  return {dot(R[0], v), dot(R[1], v), dot(R[2], v)};
+}
+
+// Material point on the wire surface: the centerline point at xi plus radius times the section-fixed unit
+// direction `direction` (in the reference section axes) turned by the section rotation there.
+template <class T>
+V3<T> surface_point(const ElementPose<T>& e, double xi, double radius, const Vec3& direction) {
+  const V3<T> m{T(direction[0]), T(direction[1]), T(direction[2])};
+  return add(centerline_point(e.x, xi), scale(radius, rotate(section_rotation(e.q, xi), m)));
 }
 
 // One Newton step of the orthogonal projection of point p onto the curve b: solves (p - b(eta)).b'(eta) = 0.

@@ -36,21 +36,64 @@ bool closest_points(const ElementCenterline<double>& a, const ElementCenterline<
   return false;
 }
 
-ContactResponse evaluate_contact(const ContactPoint& point, const ElementCenterline<double>& a,
-                                 const ElementCenterline<double>& b, int element_b, double xi, double eta,
-                                 const Vec3& axis, bool with_tangent) {
+namespace {
+
+// The poses with dual numbers: positions x + du and rotations exp(dtheta^) q, with (du, dtheta) of node k
+// (a0..b2) as variables 6k..6k+5, or only du as variables 3k..3k+2 when rotations do not enter.
+template <int N>
+std::array<ElementPose<Dual<double, N>>, 2> lift_poses(const ElementPose<double>& a, const ElementPose<double>& b) {
+  using D = Dual<double, N>;
+  constexpr bool spins = N == 36;
+  std::array<ElementPose<D>, 2> out;
+  for (int e = 0; e < 2; ++e) {
+    const ElementPose<double>& source = e == 0 ? a : b;
+    for (int i = 0; i < 3; ++i) {
+      const int node = 3 * e + i;
+      V3<D> spin{D(0.0), D(0.0), D(0.0)};
+      for (int c = 0; c < 3; ++c) {
+        out[e].x[i][c] = D::variable(source.x[i][c], spins ? 6 * node + c : 3 * node + c);
+        if (spins) spin[c] = D::variable(0.0, 6 * node + 3 + c);
+      }
+      const Quat<double>& q = source.q[i];
+      out[e].q[i] = multiply(quat_from_rotation_vector(spin), Quat<D>{D(q.w), D(q.x), D(q.y), D(q.z)});
+    }
+  }
+  return out;
+}
+
+template <int N>
+void fill_tangent(const ContactForces<Dual<double, N>>& f, ContactMatrix& tangent) {
+  constexpr bool spins = N == 36;
+  for (int row = 0; row < 36; ++row) {
+    const auto& entry = f.nodal[row / 3][row % 3];
+    for (int k = 0; k < N; ++k) tangent(row, spins ? k : 6 * (k / 3) + k % 3) = entry.grad[k];
+  }
+}
+
+}  // namespace
+
+Vec3 section_direction(const ElementPose<double>& e, double xi, const Vec3& outward) {
+  const V3<double> m = transpose_times(rotation_matrix(section_rotation(e.q, xi)), V3<double>{outward.x(), outward.y(), outward.z()});
+  return Vec3(m[0], m[1], m[2]).normalized();
+}
+
+ContactResponse evaluate_contact(const ContactPoint& point, const ElementPose<double>& a, const ElementPose<double>& b,
+                                 int element_b, double xi, double eta, const Vec3& axis, bool with_tangent) {
   ContactResponse r;
   r.element_b = element_b;
   r.xi = xi;
   r.eta = eta;
   // Stick points in the parameters of the elements evaluated now (may lie slightly outside [-1, 1]).
-  const double stick_xi = point.kind == ContactKind::kLine ? xi : element_parameter(point.history.stick_a, point.element_a);
-  const double stick_eta = element_parameter(point.history.stick_b, element_b);
-  const ContactForces<double> f = contact_forces<double>(point, a, b, xi, eta, stick_xi, stick_eta, axis);
+  StickAnchor anchor;
+  anchor.xi = point.kind == ContactKind::kLine ? xi : element_parameter(point.history.stick_a, point.element_a);
+  anchor.eta = element_parameter(point.history.stick_b, element_b);
+  anchor.direction_a = point.history.stick_direction_a;
+  anchor.direction_b = point.history.stick_direction_b;
+  const ContactForces<double> f = contact_forces<double>(point, a, b, xi, eta, anchor, axis);
   r.status = f.status;
   r.gap = f.gap;
   r.normal = Vec3(f.normal[0], f.normal[1], f.normal[2]);
-  const V3<double> xb = centerline_point(b, eta);
+  const V3<double> xb = centerline_point(b.x, eta);
   r.position = Vec3(xb[0], xb[1], xb[2]) + point.radius_b * r.normal;
   if (f.status == ContactStatus::kOpen) return r;
   r.normal_force = f.normal_force;
@@ -60,20 +103,17 @@ ContactResponse evaluate_contact(const ContactPoint& point, const ElementCenterl
   r.slip_ratio = f.slip_ratio;
   r.friction = Vec3(f.friction[0], f.friction[1], f.friction[2]);
   r.trial_friction = Vec3(f.trial_friction[0], f.trial_friction[1], f.trial_friction[2]);
-  for (int i = 0; i < 6; ++i)
+  for (int i = 0; i < 12; ++i)
     for (int c = 0; c < 3; ++c) r.force[3 * i + c] = f.nodal[i][c];
   if (!with_tangent) return r;
-  using D = Dual<double, 18>;
-  ElementCenterline<D> ad, bd;
-  for (int i = 0; i < 3; ++i)
-    for (int c = 0; c < 3; ++c) {
-      ad[i][c] = D::variable(a[i][c], 3 * i + c);
-      bd[i][c] = D::variable(b[i][c], 9 + 3 * i + c);
-    }
-  const ContactForces<D> fd = contact_forces<D>(point, ad, bd, xi, eta, stick_xi, stick_eta, axis);
-  for (int i = 0; i < 6; ++i)
-    for (int c = 0; c < 3; ++c)
-      for (int k = 0; k < 18; ++k) r.tangent(3 * i + c, k) = fd.nodal[i][c].grad[k];
+  // Rotations enter only through friction (surface stick points, moment arms): without it, translations suffice.
+  if (point.history.closed && point.mu1 > 0) {
+    const auto poses = lift_poses<36>(a, b);
+    fill_tangent<36>(contact_forces(point, poses[0], poses[1], xi, eta, anchor, axis), r.tangent);
+  } else {
+    const auto poses = lift_poses<18>(a, b);
+    fill_tangent<18>(contact_forces(point, poses[0], poses[1], xi, eta, anchor, axis), r.tangent);
+  }
   return r;
 }
 

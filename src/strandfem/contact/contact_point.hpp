@@ -13,6 +13,8 @@
 namespace strandfem {
 
 enum class ContactKind { kLine, kPoint };
+using ContactVector = Eigen::Matrix<double, 36, 1>;
+using ContactMatrix = Eigen::Matrix<double, 36, 36>;
 constexpr double kContactActivation = 1e-9;  // closed when gap <= this x (r_a + r_b)
 const char* to_string(ContactKind kind);
 const char* to_string(ContactStatus status);
@@ -25,6 +27,10 @@ inline double element_parameter(double coordinate, int element_in_wire) { return
 struct ContactHistory {
   bool closed = false;             // in contact at the last converged state
   double stick_a = 0, stick_b = 0; // wire coordinates of the stick points on the slave (a) and master (b)
+  // The stick points are on the wire surfaces: unit directions from the centerline to the surface point,
+  // fixed in each wire's section (reference section axes), so that a wire rolling or turning about its
+  // own axis slides its surface over the neighbour's.
+  Vec3 stick_direction_a = Vec3::Zero(), stick_direction_b = Vec3::Zero();
   double slip = 0;                 // accumulated slip, mm
   double slip_since_reversal = 0;  // slip since the slip direction last reversed, mm
   Vec3 slip_direction = Vec3::Zero();
@@ -76,16 +82,26 @@ struct ContactResponse {
   double slip_ratio = 1;           // P / ||Q_trial||_mu (> 1: the trial lies inside the friction cone)
   Vec3 friction = Vec3::Zero();        // friction force on the slave: N or N/mm
   Vec3 trial_friction = Vec3::Zero();  // the elastic trial -k_t g_T
-  Eigen::Matrix<double, 18, 1> force = Eigen::Matrix<double, 18, 1>::Zero();  // internal forces, 6 nodes x 3
-  Eigen::Matrix<double, 18, 18> tangent = Eigen::Matrix<double, 18, 18>::Zero();
+  // Internal nodal forces and moments of the six nodes a0, a1, a2, b0, b1, b2 (6 per node: force, moment)
+  // and their exact derivative with respect to (displacement, spin) increments of those nodes.
+  ContactVector force = ContactVector::Zero();
+  ContactMatrix tangent = ContactMatrix::Zero();
 };
 
-// Internal nodal forces (translations of a0, a1, a2, b0, b1, b2) of a contact point for the given nodal
-// centerlines and converged parameters xi, eta (doubles). T = double for the value, Dual<double, 18> for the
-// tangent (the parameters then get one Newton step in T, which gives their exact derivatives).
+// Stick anchors of a contact point in the parameters of the elements evaluated now: material points on
+// the two wire surfaces (parameter along the element, section-fixed direction).
+struct StickAnchor {
+  double xi = 0, eta = 0;
+  Vec3 direction_a = Vec3::Zero(), direction_b = Vec3::Zero();
+};
+
+// Internal nodal forces and moments (a0, a1, a2, b0, b1, b2; entry 2k force, 2k+1 moment of node k) of a
+// contact point for the given element poses and converged parameters xi, eta (doubles). T = double for the
+// value, a dual number for the tangent (the parameters then get one Newton step in T, which gives their
+// exact derivatives).
 template <class T>
 struct ContactForces {
-  std::array<V3<T>, 6> nodal;
+  std::array<V3<T>, 12> nodal;
   T gap{}, normal_force{}, q1{}, q2{};
   V3<T> normal{}, tangential_gap{}, trial_friction{}, friction{};
   ContactStatus status = ContactStatus::kOpen;
@@ -93,20 +109,20 @@ struct ContactForces {
 };
 
 template <class T>
-ContactForces<T> contact_forces(const ContactPoint& point, const ElementCenterline<T>& a, const ElementCenterline<T>& b,
-                                double xi0, double eta0, double stick_xi, double stick_eta, const Vec3& axis) {
+ContactForces<T> contact_forces(const ContactPoint& point, const ElementPose<T>& a, const ElementPose<T>& b, double xi0,
+                                double eta0, const StickAnchor& anchor, const Vec3& axis) {
   ContactForces<T> out;
   for (auto& f : out.nodal) f = {T(0.0), T(0.0), T(0.0)};
   T xi(xi0), eta(eta0);
   if (point.kind == ContactKind::kPoint) {
-    const auto next = closest_points_newton_step(a, b, xi, eta);
+    const auto next = closest_points_newton_step(a.x, b.x, xi, eta);
     xi = next[0];
     eta = next[1];
   } else {
-    eta = projection_newton_step(centerline_point(a, xi), b, eta);
+    eta = projection_newton_step(centerline_point(a.x, xi), b.x, eta);
     xi = T(xi0);
   }
-  const V3<T> xa = centerline_point(a, xi), xb = centerline_point(b, eta);
+  const V3<T> xa = centerline_point(a.x, xi), xb = centerline_point(b.x, eta);
   const V3<T> d = sub(xa, xb);
   const T distance = sqrt(dot(d, d));
   out.normal = scale(1.0 / distance, d);
@@ -118,9 +134,11 @@ ContactForces<T> contact_forces(const ContactPoint& point, const ElementCenterli
   out.status = ContactStatus::kStick;
   out.normal_force = -point.stiffness.normal * out.gap;
   V3<T> total = scale(out.normal_force, n);
-  if (point.history.closed && point.mu1 > 0) {
-    // Tangential gap: the stick points' separation projected on the contact plane.
-    const V3<T> separation = sub(centerline_point(a, stick_xi), centerline_point(b, stick_eta));
+  const bool frictional = point.history.closed && point.mu1 > 0;
+  if (frictional) {
+    // Tangential gap: the separation of the two surface stick points, projected on the contact plane.
+    const V3<T> separation = sub(surface_point(a, anchor.xi, point.radius_a, anchor.direction_a),
+                                 surface_point(b, anchor.eta, point.radius_b, anchor.direction_b));
     out.tangential_gap = sub(separation, scale(dot(n, separation), n));
     const FrictionLaw law{point.mu1, point.mu2, point.stiffness.tangential, point.friction_mode, point.slip_direction};
     const FrictionForce<T> f = friction_force(law, n, out.tangential_gap, out.normal_force, axis);
@@ -132,18 +150,27 @@ ContactForces<T> contact_forces(const ContactPoint& point, const ElementCenterli
     if (f.slipping) out.status = ContactStatus::kSlip;
     total = add(total, f.force);
   }
-  // Internal force = minus the contact force acting on the node; weight turns per-length into force.
+  // Internal force = minus the contact force acting on the node; weight turns per-length into force. The
+  // force acts at the surface points x_a - r_a n and x_b + r_b n, so friction also twists both wires:
+  // internal moments w N r (n x F) on each (the normal force has no arm).
   const auto na = centerline_shape(xi), nb = centerline_shape(eta);
+  const V3<T> twist = frictional ? cross(n, out.friction) : V3<T>{T(0.0), T(0.0), T(0.0)};
   for (int i = 0; i < 3; ++i) {
-    out.nodal[i] = scale(-point.weight * na[i], total);
-    out.nodal[3 + i] = scale(point.weight * nb[i], total);
+    out.nodal[2 * i] = scale(-point.weight * na[i], total);
+    out.nodal[6 + 2 * i] = scale(point.weight * nb[i], total);
+    if (!frictional) continue;
+    out.nodal[2 * i + 1] = scale(point.weight * point.radius_a * na[i], twist);
+    out.nodal[6 + 2 * i + 1] = scale(point.weight * point.radius_b * nb[i], twist);
   }
   return out;
 }
 
 // Value, outputs and (if with_tangent) exact tangent of a contact point.
-ContactResponse evaluate_contact(const ContactPoint& point, const ElementCenterline<double>& a,
-                                 const ElementCenterline<double>& b, int element_b, double xi, double eta,
-                                 const Vec3& axis, bool with_tangent);
+ContactResponse evaluate_contact(const ContactPoint& point, const ElementPose<double>& a, const ElementPose<double>& b,
+                                 int element_b, double xi, double eta, const Vec3& axis, bool with_tangent);
+
+// Section-fixed unit direction from the centerline at xi to the surface point along `outward` (a unit
+// vector in space): the stick direction of a point that closes or slides there.
+Vec3 section_direction(const ElementPose<double>& e, double xi, const Vec3& outward);
 
 }  // namespace strandfem

@@ -21,6 +21,16 @@ ElementCenterline<double> centerline(const Mesh& mesh, const std::vector<NodeSta
   return x;
 }
 
+ElementPose<double> pose(const Mesh& mesh, const std::vector<NodeState>& state, int element) {
+  ElementPose<double> e;
+  e.x = centerline(mesh, state, element);
+  for (int i = 0; i < 3; ++i) {
+    const Quaternion& q = state[mesh.elements[element].nodes[i]].rotation;
+    e.q[i] = {q.w(), q.x(), q.y(), q.z()};
+  }
+  return e;
+}
+
 Vec3 to_vec(const V3<double>& v) { return Vec3(v[0], v[1], v[2]); }
 
 int local_index(const Mesh& mesh, int element) {
@@ -262,9 +272,9 @@ ContactResponse ContactSet::evaluate_point(const Mesh& mesh, const std::vector<N
   open.gap = 1e300;
   if (p.kind == ContactKind::kPoint) {
     double xi = p.xi, eta = p.eta;
-    const auto a = centerline(mesh, state, mesh.wires[p.wire_a].elements[p.element_a]);
-    const auto b = centerline(mesh, state, mesh.wires[p.wire_b].elements[p.element_b]);
-    if (!closest_points(a, b, xi, eta) || std::abs(xi) > 1.5 || std::abs(eta) > 1.5) return open;
+    const auto a = pose(mesh, state, mesh.wires[p.wire_a].elements[p.element_a]);
+    const auto b = pose(mesh, state, mesh.wires[p.wire_b].elements[p.element_b]);
+    if (!closest_points(a.x, b.x, xi, eta) || std::abs(xi) > 1.5 || std::abs(eta) > 1.5) return open;
     // Past a wire's end there is no wire to touch.
     if ((p.element_a == 0 && xi < -1.0) || (p.element_a == element_count(mesh, p.wire_a) - 1 && xi > 1.0) ||
         (p.element_b == 0 && eta < -1.0) || (p.element_b == element_count(mesh, p.wire_b) - 1 && eta > 1.0))
@@ -272,10 +282,10 @@ ContactResponse ContactSet::evaluate_point(const Mesh& mesh, const std::vector<N
     return evaluate_contact(p, a, b, p.element_b, xi, eta, settings_.strand_axis, with_tangent);
   }
   const LineContactGroup& g = groups_[p.group];
-  const auto a = centerline(mesh, state, g.slave_element);
-  const FootPoint foot = project_onto_wire(mesh, state, g, centerline_point(a, p.xi), p.element_b, p.eta);
+  const auto a = pose(mesh, state, g.slave_element);
+  const FootPoint foot = project_onto_wire(mesh, state, g, centerline_point(a.x, p.xi), p.element_b, p.eta);
   if (foot.element < 0) return open;
-  const auto b = centerline(mesh, state, mesh.wires[g.wire_b].elements[foot.element]);
+  const auto b = pose(mesh, state, mesh.wires[g.wire_b].elements[foot.element]);
   return evaluate_contact(p, a, b, foot.element, p.xi, foot.eta, settings_.strand_axis, with_tangent);
 }
 
@@ -323,15 +333,23 @@ bool ContactSet::commit(const Mesh& mesh, const std::vector<NodeState>& state) {
       continue;
     }
     const double sa = wire_coordinate(p.element_a, r.xi), sb = wire_coordinate(r.element_b, r.eta);
+    // Section-fixed directions of the current contact point on both surfaces.
+    const auto [element_a, element_b] = elements_of(mesh, static_cast<int>(i));
+    const Vec3 direction_a = section_direction(pose(mesh, state, element_a), r.xi, -r.normal);
+    const Vec3 direction_b = section_direction(pose(mesh, state, element_b), r.eta, r.normal);
     if (!h.closed) {
       h.closed = true;
       h.stick_a = sa;
       h.stick_b = sb;
+      h.stick_direction_a = direction_a;
+      h.stick_direction_b = direction_b;
     } else if (r.status == ContactStatus::kSlip) {
-      // Pull the stick points toward the current closest points so that k_t |g_T| = |Q| on the cone.
+      // Pull the stick points toward the current contact points so that k_t |g_T| = |Q| on the cone.
       const double c = r.slip_ratio;
       h.stick_a = sa + (h.stick_a - sa) * c;
       h.stick_b = sb + (h.stick_b - sb) * c;
+      h.stick_direction_a = (direction_a + (h.stick_direction_a - direction_a) * c).normalized();
+      h.stick_direction_b = (direction_b + (h.stick_direction_b - direction_b) * c).normalized();
       const double slip = r.tangential_gap.norm() * (1.0 - c);
       const Vec3 direction = r.tangential_gap.normalized();
       if (direction.dot(h.slip_direction) < 0) h.slip_since_reversal = 0;

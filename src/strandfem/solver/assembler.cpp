@@ -61,10 +61,10 @@ Assembler::Assembler(const Model& model, const DofMap& dofs) : dofs_(dofs) {
     const auto &a = model.mesh.elements[e].nodes, &b = model.mesh.elements[f].nodes;
     const std::array<int, 6> nodes = {a[0], a[1], a[2], b[0], b[1], b[2]};
     if (std::any_of(nodes.begin(), nodes.end(), [&](int n) { return dofs.tie_of[n] >= 0; })) continue;
-    contact_pair_[e * element_count + f] = static_cast<int>(contact_slots_.size() / 324);
-    for (int i = 0; i < 18; ++i)
-      for (int j = 0; j < 18; ++j) {
-        const int row = dofs.equation[nodes[i / 3]][i % 3], col = dofs.equation[nodes[j / 3]][j % 3];
+    contact_pair_[e * element_count + f] = static_cast<int>(contact_slots_.size() / 1296);
+    for (int i = 0; i < 36; ++i)
+      for (int j = 0; j < 36; ++j) {
+        const int row = dofs.equation[nodes[i / 6]][i % 6], col = dofs.equation[nodes[j / 6]][j % 6];
         contact_slots_.push_back(row >= 0 && col >= 0 ? pattern_.find(row, col) : -1);
       }
   }
@@ -113,7 +113,7 @@ void Assembler::scatter(const Model& model, const std::vector<NodeState>& state,
   }
 }
 
-// Contact points act on the translations of their six nodes; sequential, in point order (deterministic).
+// Contact points act on their six nodes; sequential, in point order (deterministic).
 void Assembler::add_contacts(const Model& model, const std::vector<NodeState>& state, std::vector<double>& nodal_forces,
                              std::vector<double>& slave_forces, std::vector<double>* values) {
   const bool with_tangent = values != nullptr;
@@ -127,23 +127,17 @@ void Assembler::add_contacts(const Model& model, const std::vector<NodeState>& s
     const auto cached = contact_pair_.find(element_a * element_count + element_b);
     if (cached != contact_pair_.end()) {
       for (int a = 0; a < 6; ++a)
-        for (int k = 0; k < 3; ++k) nodal_forces[6 * nodes[a] + k] += c.force[3 * a + k];
+        for (int k = 0; k < 6; ++k) nodal_forces[6 * nodes[a] + k] += c.force[6 * a + k];
       if (with_tangent) {
-        const int* slots = &contact_slots_[static_cast<std::size_t>(cached->second) * 324];
-        for (int a = 0; a < 18; ++a)
-          for (int b = 0; b < 18; ++b)
-            if (slots[18 * a + b] >= 0) (*values)[slots[18 * a + b]] += c.tangent(a, b);
+        const int* slots = &contact_slots_[static_cast<std::size_t>(cached->second) * 1296];
+        for (int a = 0; a < 36; ++a)
+          for (int b = 0; b < 36; ++b)
+            if (slots[36 * a + b] >= 0) (*values)[slots[36 * a + b]] += c.tangent(a, b);
       }
       continue;
     }
-    Eigen::Matrix<double, 36, 1> r = Eigen::Matrix<double, 36, 1>::Zero();
-    Eigen::Matrix<double, 36, 36> K = Eigen::Matrix<double, 36, 36>::Zero();
-    for (int a = 0; a < 6; ++a) {
-      r.segment<3>(6 * a) = c.force.segment<3>(3 * a);
-      if (with_tangent)
-        for (int b = 0; b < 6; ++b) K.block<3, 3>(6 * a, 6 * b) = c.tangent.block<3, 3>(3 * a, 3 * b);
-    }
-    scatter<6>(model, state, nodes, r, with_tangent ? &K : nullptr, nodal_forces, slave_forces, values, nullptr);
+    ContactMatrix K = with_tangent ? c.tangent : ContactMatrix::Zero();
+    scatter<6>(model, state, nodes, c.force, with_tangent ? &K : nullptr, nodal_forces, slave_forces, values, nullptr);
   }
 }
 

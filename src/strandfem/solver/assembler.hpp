@@ -39,7 +39,7 @@ class Assembler {
   SparsePattern pattern_;
   std::vector<int> element_slots_;               // 324 per element, -1 where row or column is constrained
   std::vector<std::array<int, 9>> tie_slots_;    // master rotation-rotation slots per tie
-  // Contact element pairs whose six nodes are all untied: 324 translation slots each (18 x 18, nodes a0..b2),
+  // Contact element pairs whose six nodes are all untied: 1296 slots each (36 x 36, nodes a0..b2),
   // found by (slave element, master element); other pairs go through the general scatter.
   std::unordered_map<std::int64_t, int> contact_pair_;
   std::vector<int> contact_slots_;
