@@ -26,6 +26,7 @@ inline double element_parameter(double coordinate, int element_in_wire) { return
 // History of a contact point; written only when an increment converges.
 struct ContactHistory {
   bool closed = false;             // in contact at the last converged state
+  double normal_force = 0;         // P at the last converged state: N (point) or N/mm (line)
   double stick_a = 0, stick_b = 0; // wire coordinates of the stick points on the slave (a) and master (b)
   // The stick points are on the wire surfaces: unit directions from the centerline to the surface point,
   // fixed in each wire's section (reference section axes), so that a wire rolling or turning about its
@@ -53,6 +54,7 @@ struct ContactPoint {
   double gap_offset = 0;           // subtracted from the gap: the reference overlap (<= 0) or 0
   PenaltyStiffness stiffness;
   double mu1 = 0, mu2 = 0;         // along the strand axis projected on the contact plane, and across
+  double allowed_slip = 0;         // elastic slip (mm) at which the elastic-slip penalty reaches the cone
   ContactHistory history;
   // Working active set of the current increment (not history). An active point keeps its penalty force
   // P = -k_n g even when the gap opens (tension) until Newton has converged; only then are tensile points

@@ -197,6 +197,7 @@ void ContactSet::set_point_properties(const Mesh& mesh, ContactPoint& p, const V
   p.mu1 = settings_.friction_at(sa.material().name, sb.material().name, reference_position.dot(settings_.strand_axis));
   p.mu2 = p.mu1 * settings_.orthotropy_ratio;
   p.stiffness = penalty_stiffness(settings_, p.kind == ContactKind::kLine, modulus, diameter, element_size, p.mu1);
+  p.allowed_slip = settings_.elastic_slip * element_size;
 }
 
 void ContactSet::add_line_points(const Mesh& mesh, int group) {
@@ -327,6 +328,7 @@ bool ContactSet::commit(const Mesh& mesh, const std::vector<NodeState>& state) {
     if (r.status == ContactStatus::kOpen || !(r.normal_force > 0)) {
       // An opened contact forgets its stick point; the slip it accumulated stays on record.
       h.closed = false;
+      h.normal_force = 0;
       h.slipping = false;
       h.slip_since_reversal = 0;
       h.slip_direction.setZero();
@@ -337,6 +339,7 @@ bool ContactSet::commit(const Mesh& mesh, const std::vector<NodeState>& state) {
     const auto [element_a, element_b] = elements_of(mesh, static_cast<int>(i));
     const Vec3 direction_a = section_direction(pose(mesh, state, element_a), r.xi, -r.normal);
     const Vec3 direction_b = section_direction(pose(mesh, state, element_b), r.eta, r.normal);
+    h.normal_force = r.normal_force;
     if (!h.closed) {
       h.closed = true;
       h.stick_a = sa;

@@ -25,6 +25,7 @@ void ContactSettings::validate() const {
     if (!(z.z_max > z.z_min)) throw std::invalid_argument("contact.friction_zones[].z must be [z_min, z_max] with z_max > z_min");
   }
   require_positive(orthotropy_ratio, "orthotropy_ratio");
+  require_positive(elastic_slip, "elastic_slip");
   require_positive(search_margin, "search_margin");
   if (!(touch_tolerance >= 0 && touch_tolerance < 0.5)) throw std::invalid_argument("contact.touch_tolerance must be in [0, 0.5)");
   if (!(line_contact_angle > 0 && line_contact_angle < 90))

@@ -27,6 +27,12 @@ enum class InitialOverlap {
   kKeep     // keep it: the overlap is pressed out in the first increment
 };
 
+// How the tangential (stick) penalty is set.
+enum class TangentialPenalty {
+  kPaper,       // eq. 2.6: K_t = fKt mu E d^2 xi_t / h, fixed
+  kElasticSlip  // from an allowed elastic slip: K_t = mu P / (elastic_slip h), P of the last converged state
+};
+
 struct ContactSettings {
   bool enabled = false;
   // Penalty factors of eqs. 2.5-2.6: K_n = fKn E d xi_n and K_t = fKt mu E d^2 xi_t / h (N/mm, point
@@ -35,6 +41,8 @@ struct ContactSettings {
   double tangential_factor = 50.0;      // fKt
   double normal_multiplier = 10.0;      // xi_n
   double tangential_multiplier = 3.75;  // xi_t
+  TangentialPenalty tangential_penalty = TangentialPenalty::kElasticSlip;
+  double elastic_slip = 0.005;  // kElasticSlip: allowed elastic slip as a fraction of the contact element length h
   // Friction: default coefficient, then material pairs, then axial zones (highest priority).
   double friction = 0.0;
   std::vector<MaterialPairFriction> pair_friction;

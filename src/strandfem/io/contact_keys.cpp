@@ -17,7 +17,8 @@ ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Nod
                                        const std::map<std::string, ElasticMaterial>& materials, bool strand) {
   reader.check_keys(node, "contact", {"enabled", "friction", "friction_pairs", "friction_zones", "orthotropy_ratio",
                                        "normal_factor", "tangential_factor", "normal_multiplier", "tangential_multiplier",
-                                       "search_margin", "line_contact_angle", "line_points", "initial_overlap", "touch_tolerance", "axis"});
+                                       "search_margin", "line_contact_angle", "line_points", "initial_overlap", "touch_tolerance", "axis",
+                                       "tangential_penalty", "elastic_slip"});
   ContactSettings c;
   c.enabled = node["enabled"] ? reader.boolean(node["enabled"], "contact.enabled") : true;
   auto friction = [&](const YAML::Node& n, const std::string& path) {
@@ -59,6 +60,10 @@ ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Nod
   positive("normal_multiplier", c.normal_multiplier, "-");
   positive("tangential_multiplier", c.tangential_multiplier, "-");
   positive("search_margin", c.search_margin, "mm");
+  positive("elastic_slip", c.elastic_slip, "fraction of the contact element length");
+  if (node["tangential_penalty"])
+    c.tangential_penalty = reader.choice(node["tangential_penalty"], "contact.tangential_penalty", {"paper", "elastic_slip"}) == "paper"
+                               ? TangentialPenalty::kPaper : TangentialPenalty::kElasticSlip;
   if (node["line_contact_angle"]) {
     c.line_contact_angle = reader.positive(node["line_contact_angle"], "contact.line_contact_angle", "degrees");
     if (c.line_contact_angle >= 90) reader.fail(node["line_contact_angle"], "contact.line_contact_angle", "expected an angle in (0, 90) degrees");
