@@ -29,6 +29,11 @@ class LinearSolver {
   virtual std::string name() const = 0;
 };
 
+// METIS nested-dissection ordering of the symmetrized pattern A + A^T (diagonal ignored): the returned
+// position[i] is the 0-based place of variable i in the pivot order. Unsymmetric tangents keep a
+// structurally near-symmetric pattern, so ordering A + A^T is what the multifrontal solvers want.
+std::vector<int> nested_dissection_ordering(const SparsePattern& pattern);
+
 // "mumps" (default) or "umfpack"; throws std::invalid_argument for any other name.
 std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name);
 
