@@ -17,6 +17,19 @@ struct SparsePattern {
   int find(int row, int col) const;
 };
 
+// What a solver did so far: the ordering that actually ran, the size and cost of its factors, time per phase.
+struct LinearSolverStatistics {
+  std::string ordering;             // read back from the solver after analysis, not the one requested
+  long long factor_entries = 0;     // entries of L and U after the last factorization
+  double factorization_flops = 0;   // floating-point operations of the last factorization
+  int analyses = 0;
+  int factorizations = 0;
+  int solves = 0;
+  double analysis_seconds = 0;      // wall-clock totals over all calls (steady clock)
+  double factorization_seconds = 0;
+  double solve_seconds = 0;
+};
+
 class LinearSolver {
  public:
   virtual ~LinearSolver() = default;
@@ -27,7 +40,13 @@ class LinearSolver {
   // Solves A x = b in place (b in, x out).
   virtual void solve(std::vector<double>& rhs) = 0;
   virtual std::string name() const = 0;
+  virtual const LinearSolverStatistics& statistics() const = 0;
 };
+
+// METIS nested-dissection ordering of the symmetrized pattern A + A^T (diagonal ignored): the returned
+// position[i] is the 0-based place of variable i in the pivot order. Unsymmetric tangents keep a
+// structurally near-symmetric pattern, so ordering A + A^T is what the multifrontal solvers want.
+std::vector<int> nested_dissection_ordering(const SparsePattern& pattern);
 
 // "mumps" (default) or "umfpack"; throws std::invalid_argument for any other name.
 std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name);

@@ -1,6 +1,7 @@
-// MUMPS 5.5 sequential unsymmetric multifrontal LU with METIS ordering (the path to distributed runs).
+// MUMPS 5.5 sequential unsymmetric multifrontal LU, ordered by METIS through libmetis (the path to distributed runs).
 #include <dmumps_c.h>
 
+#include <chrono>
 #include <string>
 
 #include "strandfem/solver/linear_solver.hpp"
@@ -9,6 +10,27 @@ namespace strandfem {
 namespace {
 
 constexpr int kUseCommWorld = -987654;  // MUMPS' Fortran communicator placeholder for the sequential build
+constexpr int kUserOrdering = 1;        // ICNTL(7) = 1: pivot order given in PERM_IN
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// Name of the ordering MUMPS reports in INFOG(7) after analysis.
+std::string ordering_name(int infog7) {
+  switch (infog7) {
+    case 0: return "amd";
+    case 1: return "metis (user-supplied via libmetis)";  // the only pivot order this class supplies
+    case 2: return "amf";
+    case 3: return "scotch";
+    case 4: return "pord";
+    case 5: return "metis";
+    case 6: return "qamd";
+    default: return "unknown (INFOG(7) = " + std::to_string(infog7) + ")";
+  }
+}
+
+// MUMPS stores counts that overflow a 4-byte INFOG entry as negative millions.
+long long unpack_count(int value) { return value < 0 ? -1'000'000LL * value : value; }
 
 class MumpsSolver final : public LinearSolver {
  public:
@@ -23,7 +45,9 @@ class MumpsSolver final : public LinearSolver {
     id_.icntl[1] = -1;
     id_.icntl[2] = -1;
     id_.icntl[3] = 0;
-    id_.icntl[6] = 5;    // ICNTL(7) = 5: METIS ordering
+    // Debian's libmumps-seq is built without METIS: ICNTL(7) = 5 silently ran AMF or SCOTCH instead
+    // (INFOG(7) = 2 or 3). So the METIS nested dissection is computed here and handed over as the pivot order.
+    id_.icntl[6] = kUserOrdering;
     id_.icntl[13] = 50;  // ICNTL(14): 50 % working-space relaxation
   }
   ~MumpsSolver() override {
@@ -32,6 +56,7 @@ class MumpsSolver final : public LinearSolver {
   }
 
   void analyze(const SparsePattern& pattern) override {
+    const auto start = Clock::now();
     rows_.clear();
     cols_.clear();
     for (int c = 0; c < pattern.size; ++c)
@@ -40,34 +65,49 @@ class MumpsSolver final : public LinearSolver {
         cols_.push_back(c + 1);
       }
     values_.assign(rows_.size(), 0.0);
+    pivot_position_ = nested_dissection_ordering(pattern);
+    for (int& p : pivot_position_) ++p;  // PERM_IN is 1-based
     id_.n = pattern.size;
     id_.nnz = static_cast<MUMPS_INT8>(rows_.size());
     id_.irn = rows_.data();
     id_.jcn = cols_.data();
     id_.a = values_.data();
+    id_.perm_in = pivot_position_.data();
     id_.job = 1;
     dmumps_c(&id_);
     check("analysis");
+    statistics_.ordering = ordering_name(id_.infog[6]);
+    ++statistics_.analyses;
+    statistics_.analysis_seconds += seconds_since(start);
   }
 
   void factorize(const std::vector<double>& values) override {
+    const auto start = Clock::now();
     values_ = values;
     id_.a = values_.data();
     id_.job = 2;
     dmumps_c(&id_);
     check("factorization (singular or unstable tangent)");
+    statistics_.factor_entries = unpack_count(id_.infog[28]);  // INFOG(29): entries in the factors
+    statistics_.factorization_flops = id_.rinfog[2];             // RINFOG(3): flops of the elimination
+    ++statistics_.factorizations;
+    statistics_.factorization_seconds += seconds_since(start);
   }
 
   void solve(std::vector<double>& rhs) override {
+    const auto start = Clock::now();
     id_.rhs = rhs.data();
     id_.nrhs = 1;
     id_.lrhs = id_.n;
     id_.job = 3;
     dmumps_c(&id_);
     check("solve");
+    ++statistics_.solves;
+    statistics_.solve_seconds += seconds_since(start);
   }
 
   std::string name() const override { return "mumps"; }
+  const LinearSolverStatistics& statistics() const override { return statistics_; }
 
  private:
   void check(const char* phase) const {
@@ -77,7 +117,9 @@ class MumpsSolver final : public LinearSolver {
   }
   DMUMPS_STRUC_C id_{};
   std::vector<int> rows_, cols_;
+  std::vector<int> pivot_position_;  // PERM_IN: 1-based position of each variable in the pivot order
   std::vector<double> values_;
+  LinearSolverStatistics statistics_;
 };
 
 }  // namespace

@@ -1,0 +1,10 @@
+# Finds METIS 5 (Debian's libmetis-dev), which ships no CMake config; the solvers order with it themselves.
+find_path(METIS_INCLUDE_DIR metis.h)
+find_library(METIS_LIBRARY metis)
+include(FindPackageHandleStandardArgs)
+find_package_handle_standard_args(Metis DEFAULT_MSG METIS_INCLUDE_DIR METIS_LIBRARY)
+if(Metis_FOUND AND NOT TARGET Metis::metis)
+  add_library(Metis::metis INTERFACE IMPORTED)
+  target_include_directories(Metis::metis INTERFACE ${METIS_INCLUDE_DIR})
+  target_link_libraries(Metis::metis INTERFACE ${METIS_LIBRARY})
+endif()
