@@ -9,12 +9,13 @@
 #include "strandfem/contact/contact_settings.hpp"
 #include "strandfem/contact/friction.hpp"
 #include "strandfem/core/types.hpp"
+#include "strandfem/interaction/interaction.hpp"
 
 namespace strandfem {
 
 enum class ContactKind { kLine, kPoint };
-using ContactVector = Eigen::Matrix<double, 36, 1>;
-using ContactMatrix = Eigen::Matrix<double, 36, 36>;
+using ContactVector = PairVector;
+using ContactMatrix = PairMatrix;
 constexpr double kContactActivation = 1e-9;  // closed when gap <= this x (r_a + r_b)
 const char* to_string(ContactKind kind);
 const char* to_string(ContactStatus status);

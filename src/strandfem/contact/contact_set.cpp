@@ -297,6 +297,14 @@ void ContactSet::evaluate(const Mesh& mesh, const std::vector<NodeState>& state,
   for (int i = 0; i < count; ++i) responses_[i] = evaluate_point(mesh, state, i, with_tangent);
 }
 
+void ContactSet::contributions(const Mesh& mesh, std::vector<PairContribution>& out) const {
+  for (std::size_t i = 0; i < responses_.size(); ++i) {
+    const ContactResponse& r = responses_[i];
+    if (r.status == ContactStatus::kOpen) continue;
+    out.push_back({nodes_of(mesh, static_cast<int>(i)), elements_of(mesh, static_cast<int>(i)), &r.force, &r.tangent});
+  }
+}
+
 std::pair<int, int> ContactSet::elements_of(const Mesh& mesh, int index) const {
   const ContactPoint& p = points_[index];
   const int element_b = responses_[index].element_b >= 0 ? responses_[index].element_b

@@ -20,7 +20,7 @@ struct LineContactGroup {
   std::vector<int> candidates;   // element indices within wire b
 };
 
-class ContactSet {
+class ContactSet final : public Interaction {
  public:
   // Searches the reference configuration and creates the contact points. Throws std::invalid_argument
   // for bad settings.
@@ -29,7 +29,8 @@ class ContactSet {
   const ContactSettings& settings() const { return settings_; }
 
   // Evaluates every point at `state` from the committed histories (no history is written).
-  void evaluate(const Mesh& mesh, const std::vector<NodeState>& state, bool with_tangent);
+  void evaluate(const Mesh& mesh, const std::vector<NodeState>& state, bool with_tangent) override;
+  void contributions(const Mesh& mesh, std::vector<PairContribution>& out) const override;
   const std::vector<ContactPoint>& points() const { return points_; }
   const std::vector<ContactResponse>& responses() const { return responses_; }
   // Mesh nodes a0, a1, a2, b0, b1, b2 of a point as last evaluated (b: the master element used).
@@ -42,17 +43,20 @@ class ContactSet {
   // accepted iterate: closed points become active and hold their stick/slip state; release_tensile, once
   // Newton has converged: releases points in tension and switches held friction states that the trial
   // force contradicts; returns how many changed (0: the increment has converged).
-  void begin_increment();
+  void begin_increment() override;
+  void accept_iterate() override { activate_closed(); }
+  int changes_at_convergence() override { return release_tensile(); }
+  void revert() override {}  // working states are rebuilt from the histories by begin_increment
   void activate_closed();
   int release_tensile();
 
   // Converged increment at `state`: writes histories (stick points, slip), moves crossings to the
   // neighbouring element, re-runs the search when nodes moved more than half the margin. Returns true
   // when the set of coupled element pairs changed (the tangent's pattern must be rebuilt).
-  bool commit(const Mesh& mesh, const std::vector<NodeState>& state);
+  bool commit(const Mesh& mesh, const std::vector<NodeState>& state) override;
 
   // Mesh element pairs that contact may couple (for the sparsity pattern).
-  const std::vector<std::pair<int, int>>& element_pairs() const { return element_pairs_; }
+  const std::vector<std::pair<int, int>>& element_pairs() const override { return element_pairs_; }
   // Lateral pairs: (slave element, master wire) line-contact groups (the paper's "contact pairs").
   int lateral_pair_count() const { return static_cast<int>(groups_.size()); }
   // Radial contacts: crossings of wires in point contact.

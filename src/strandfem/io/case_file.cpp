@@ -395,7 +395,8 @@ class CaseParser {
 
   void parse_solver(const YAML::Node& node) {
     reader_.check_keys(node, "solver", {"force_tolerance", "moment_tolerance", "displacement_tolerance", "max_iterations",
-                                        "max_cutbacks", "line_search_cuts", "linear_solver", "threads"});
+                                        "max_cutbacks", "line_search_cuts", "linear_solver", "threads",
+                                        "krylov_iterations", "krylov_tolerance"});
     SolverOptions& o = out_.model.options;
     if (node["force_tolerance"]) o.force_tolerance = reader_.positive(node["force_tolerance"], "solver.force_tolerance", "-");
     if (node["moment_tolerance"]) o.moment_tolerance = reader_.positive(node["moment_tolerance"], "solver.moment_tolerance", "-");
@@ -405,6 +406,8 @@ class CaseParser {
     if (node["line_search_cuts"]) o.line_search_cuts = reader_.integer(node["line_search_cuts"], "solver.line_search_cuts", 0);
     if (node["linear_solver"]) o.linear_solver = reader_.choice(node["linear_solver"], "solver.linear_solver", {"mumps", "umfpack"});
     if (node["threads"]) o.threads = reader_.integer(node["threads"], "solver.threads", 0);
+    if (node["krylov_iterations"]) o.krylov_iterations = reader_.integer(node["krylov_iterations"], "solver.krylov_iterations", 0);
+    if (node["krylov_tolerance"]) o.krylov_tolerance = reader_.positive(node["krylov_tolerance"], "solver.krylov_tolerance", "-");
   }
 
   void parse_output(const YAML::Node& node) {
@@ -452,12 +455,15 @@ CaseDefinition load_case(const std::string& path) {
                           {"max_cutbacks", c.model.options.max_cutbacks},
                           {"line_search_cuts", c.model.options.line_search_cuts},
                           {"linear_solver", c.model.options.linear_solver},
+                          {"krylov_iterations", c.model.options.krylov_iterations},
+                          {"krylov_tolerance", c.model.options.krylov_tolerance},
                           {"threads", c.model.options.threads}};
   const ContactSettings& k = c.model.contact_settings;
   c.resolved["contact"] = {{"enabled", k.enabled}, {"friction", k.friction}, {"orthotropy_ratio", k.orthotropy_ratio},
                            {"normal_factor", k.normal_factor}, {"tangential_factor", k.tangential_factor},
                            {"normal_multiplier", k.normal_multiplier}, {"tangential_multiplier", k.tangential_multiplier},
-                           {"search_margin", k.search_margin}, {"line_contact_angle", k.line_contact_angle},
+                           {"tangential_penalty", k.tangential_penalty == TangentialPenalty::kPaper ? "paper" : "elastic_slip"},
+                           {"elastic_slip", k.elastic_slip}, {"search_margin", k.search_margin}, {"line_contact_angle", k.line_contact_angle},
                            {"line_points", k.line_points},
                            {"initial_overlap", k.initial_overlap == InitialOverlap::kOffset ? "offset" : "keep"}, {"touch_tolerance", k.touch_tolerance},
                            {"pairs", k.pair_friction.size()}, {"zones", k.zone_friction.size()}};

@@ -170,6 +170,20 @@ void ResultWriter::finish(const StaticAnalysis& analysis, const AnalysisStatus& 
   summary["wall_time_s"] = wall_seconds;
   summary["converged_increments"] = rows_.size();
   summary["linear_solver"] = analysis.linear_solver_name();
+  const AnalysisStatistics& a = analysis.statistics();
+  const LinearSolverStatistics& l = analysis.linear_statistics();
+  summary["solver_statistics"] = {{"newton_iterations", a.newton_iterations},
+                                  {"factorizations", l.factorizations},
+                                  {"krylov_solves", a.krylov_solves},
+                                  {"krylov_iterations", a.krylov_iterations},
+                                  {"assembly_seconds", a.assembly_seconds},
+                                  {"linear_seconds", a.linear_seconds},
+                                  {"factorization_seconds", l.factorization_seconds},
+                                  {"solve_seconds", l.solve_seconds},
+                                  {"analyses", l.analyses},
+                                  {"ordering", l.ordering},
+                                  {"factor_entries", l.factor_entries},
+                                  {"factorization_flops", l.factorization_flops}};
   summary["contacts"] = ContactWriter::summary(analysis);
   summary["configuration"] = case_.resolved;
   std::ofstream(directory_ / "summary.json") << summary.dump(2) << "\n";

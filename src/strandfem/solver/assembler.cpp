@@ -23,11 +23,12 @@ Assembler::Assembler(const Model& model, const DofMap& dofs) : dofs_(dofs) {
           }
   };
   for (const MeshElement& e : model.mesh.elements) couple(e.nodes, e.nodes);
-  for (const auto& [e, f] : model.contacts.element_pairs()) {
-    const auto &a = model.mesh.elements[e].nodes, &b = model.mesh.elements[f].nodes;
-    couple(a, b);
-    couple(b, a);
-  }
+  for (const Interaction* interaction : model.interactions())
+    for (const auto& [e, f] : interaction->element_pairs()) {
+      const auto &a = model.mesh.elements[e].nodes, &b = model.mesh.elements[f].nodes;
+      couple(a, b);
+      couple(b, a);
+    }
   pattern_.size = n;
   pattern_.column_start.assign(n + 1, 0);
   for (int c = 0; c < n; ++c) {
@@ -57,7 +58,10 @@ Assembler::Assembler(const Model& model, const DofMap& dofs) : dofs_(dofs) {
   }
   outputs_.resize(model.mesh.elements.size());
   const std::int64_t element_count = static_cast<std::int64_t>(model.mesh.elements.size());
-  for (const auto& [e, f] : model.contacts.element_pairs()) {
+  std::vector<std::pair<int, int>> pairs;
+  for (const Interaction* interaction : model.interactions())
+    pairs.insert(pairs.end(), interaction->element_pairs().begin(), interaction->element_pairs().end());
+  for (const auto& [e, f] : pairs) {
     const auto &a = model.mesh.elements[e].nodes, &b = model.mesh.elements[f].nodes;
     const std::array<int, 6> nodes = {a[0], a[1], a[2], b[0], b[1], b[2]};
     if (std::any_of(nodes.begin(), nodes.end(), [&](int n) { return dofs.tie_of[n] >= 0; })) continue;
@@ -113,31 +117,30 @@ void Assembler::scatter(const Model& model, const std::vector<NodeState>& state,
   }
 }
 
-// Contact points act on their six nodes; sequential, in point order (deterministic).
-void Assembler::add_contacts(const Model& model, const std::vector<NodeState>& state, std::vector<double>& nodal_forces,
-                             std::vector<double>& slave_forces, std::vector<double>* values) {
+// Interaction contributions act on their six nodes; sequential, in order (deterministic).
+void Assembler::add_interactions(const Model& model, const std::vector<NodeState>& state,
+                                 std::vector<double>& nodal_forces, std::vector<double>& slave_forces,
+                                 std::vector<double>* values) {
   const bool with_tangent = values != nullptr;
   const std::int64_t element_count = static_cast<std::int64_t>(model.mesh.elements.size());
-  const auto& responses = model.contacts.responses();
-  for (std::size_t i = 0; i < responses.size(); ++i) {
-    const ContactResponse& c = responses[i];
-    if (c.status == ContactStatus::kOpen) continue;
-    const auto nodes = model.contacts.nodes_of(model.mesh, static_cast<int>(i));
-    const auto [element_a, element_b] = model.contacts.elements_of(model.mesh, static_cast<int>(i));
-    const auto cached = contact_pair_.find(element_a * element_count + element_b);
+  contributions_.clear();
+  for (const Interaction* interaction : model.interactions()) interaction->contributions(model.mesh, contributions_);
+  for (const PairContribution& c : contributions_) {
+    const auto cached = contact_pair_.find(c.elements.first * element_count + c.elements.second);
     if (cached != contact_pair_.end()) {
       for (int a = 0; a < 6; ++a)
-        for (int k = 0; k < 6; ++k) nodal_forces[6 * nodes[a] + k] += c.force[6 * a + k];
+        for (int k = 0; k < 6; ++k) nodal_forces[6 * c.nodes[a] + k] += (*c.force)[6 * a + k];
       if (with_tangent) {
         const int* slots = &contact_slots_[static_cast<std::size_t>(cached->second) * 1296];
+        const PairMatrix& K = *c.tangent;
         for (int a = 0; a < 36; ++a)
           for (int b = 0; b < 36; ++b)
-            if (slots[36 * a + b] >= 0) (*values)[slots[36 * a + b]] += c.tangent(a, b);
+            if (slots[36 * a + b] >= 0) (*values)[slots[36 * a + b]] += K(a, b);
       }
       continue;
     }
-    ContactMatrix K = with_tangent ? c.tangent : ContactMatrix::Zero();
-    scatter<6>(model, state, nodes, c.force, with_tangent ? &K : nullptr, nodal_forces, slave_forces, values, nullptr);
+    PairMatrix K = with_tangent ? *c.tangent : PairMatrix::Zero();
+    scatter<6>(model, state, c.nodes, *c.force, with_tangent ? &K : nullptr, nodal_forces, slave_forces, values, nullptr);
   }
 }
 
@@ -152,7 +155,7 @@ void Assembler::assemble(Model& model, const std::vector<NodeState>& state, std:
     for (int i = 0; i < 3; ++i) local[i] = state[element.nodes()[i]];
     element.evaluate(local, with_tangent, outputs_[k]);
   }
-  if (model.contacts.enabled()) model.contacts.evaluate(model.mesh, state, with_tangent);
+  for (Interaction* interaction : model.interactions()) interaction->evaluate(model.mesh, state, with_tangent);
   const std::size_t node_count = model.mesh.nodes.size();
   nodal_forces.assign(6 * node_count, 0.0);
   std::vector<double> slave_forces(6 * node_count, 0.0);
@@ -163,7 +166,7 @@ void Assembler::assemble(Model& model, const std::vector<NodeState>& state, std:
     scatter<3>(model, state, model.elements[k].nodes(), outputs_[k].residual, with_tangent ? &K : nullptr, nodal_forces,
                slave_forces, values, &element_slots_[static_cast<std::size_t>(k) * 324]);
   }
-  add_contacts(model, state, nodal_forces, slave_forces, values);
+  add_interactions(model, state, nodal_forces, slave_forces, values);
   if (!with_tangent) return;
   // Rotation of the lever arm: d(arm x f)/dtheta_m = f^ arm^ (f: the slave's force, held fixed).
   for (std::size_t t = 0; t < model.ties.size(); ++t) {

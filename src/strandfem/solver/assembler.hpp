@@ -14,7 +14,7 @@ namespace strandfem {
 // element order so the sums, and hence the results, do not depend on the thread count.
 class Assembler {
  public:
-  // The pattern couples each element's nodes and, for every pair in model.contacts.element_pairs(), the
+  // The pattern couples each element's nodes and, for every pair of model.interactions()' element_pairs(), the
   // nodes of the two elements.
   Assembler(const Model& model, const DofMap& dofs);
 
@@ -26,8 +26,8 @@ class Assembler {
                 std::vector<double>* values);
 
  private:
-  void add_contacts(const Model& model, const std::vector<NodeState>& state, std::vector<double>& nodal_forces,
-                    std::vector<double>& slave_forces, std::vector<double>* values);
+  void add_interactions(const Model& model, const std::vector<NodeState>& state, std::vector<double>& nodal_forces,
+                        std::vector<double>& slave_forces, std::vector<double>* values);
   // Adds a block over `nodes` (6 DOFs each) to the global forces and tangent, moving tied slaves' rows and
   // columns to their masters; tied slaves' forces are also collected for the lever-arm term.
   template <int Nodes>
@@ -44,6 +44,7 @@ class Assembler {
   std::unordered_map<std::int64_t, int> contact_pair_;
   std::vector<int> contact_slots_;
   std::vector<BeamElement::Output> outputs_;
+  std::vector<PairContribution> contributions_;
 };
 
 }  // namespace strandfem

@@ -14,6 +14,8 @@ void SolverOptions::validate() const {
   positive(displacement_tolerance, "displacement_tolerance");
   if (max_iterations < 1) throw std::invalid_argument("solver.max_iterations must be >= 1");
   if (line_search_cuts < 0 || line_search_cuts > 20) throw std::invalid_argument("solver.line_search_cuts must be in 0..20");
+  if (krylov_iterations < 0 || krylov_iterations > 200) throw std::invalid_argument("solver.krylov_iterations must be in 0..200");
+  if (!(krylov_tolerance > 0 && krylov_tolerance < 1)) throw std::invalid_argument("solver.krylov_tolerance must be in (0, 1)");
   if (max_cutbacks < 0) throw std::invalid_argument("solver.max_cutbacks must be >= 0");
   if (threads < 0) throw std::invalid_argument("solver.threads must be >= 0");
   if (linear_solver != "mumps" && linear_solver != "umfpack")

@@ -19,6 +19,10 @@ struct SolverOptions {
   int max_iterations = 25;                // Newton iterations per increment before a cut-back
   int max_cutbacks = 8;                   // successive halvings of an increment before giving up
   int line_search_cuts = 0;               // halvings of a Newton correction that raises the residual
+  // Krylov reuse: GMRES on the current tangent, preconditioned by the last factorization, up to this many
+  // iterations before refactoring (0: factor every Newton iteration); Newton keeps the exact tangent.
+  int krylov_iterations = 12;
+  double krylov_tolerance = 1e-8;         // relative residual of the linear solve
   std::string linear_solver = "mumps";    // mumps | umfpack
   int threads = 0;                        // OpenMP threads for element evaluation; 0 = OpenMP default
   void validate() const;                  // throws std::invalid_argument naming the bad option
@@ -36,6 +40,15 @@ struct Model {
 
   // Builds one BeamElement per mesh element from the mesh's reference configuration.
   void build_elements();
+  // The interactions the solver drives beside the elements (wire contact when enabled).
+  std::vector<Interaction*> interactions() {
+    if (contacts.enabled()) return {&contacts};
+    return {};
+  }
+  std::vector<const Interaction*> interactions() const {
+    if (contacts.enabled()) return {&contacts};
+    return {};
+  }
 };
 
 // Degrees of freedom: each node has 6; slave nodes of rigid ties have none of their own (their motion

@@ -3,12 +3,26 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+
+#include "strandfem/solver/krylov.hpp"
 
 namespace strandfem {
 
 namespace {
 constexpr int kMaxContactRounds = 40;  // contact set changes per increment before a cut-back
+
+// Adds the wall time of its scope to a total.
+class Timer {
+ public:
+  explicit Timer(double& total) : total_(total), start_(std::chrono::steady_clock::now()) {}
+  ~Timer() { total_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+
+ private:
+  double& total_;
+  std::chrono::steady_clock::time_point start_;
+};
 }  // namespace
 
 StaticAnalysis::StaticAnalysis(Model& model) : model_(model) {
@@ -19,7 +33,7 @@ StaticAnalysis::StaticAnalysis(Model& model) : model_(model) {
   model_.contacts.initialize(model_.mesh, model_.contact_settings);
   assembler_ = std::make_unique<Assembler>(model_, dofs_);
   solver_ = make_linear_solver(model_.options.linear_solver);
-  if (dofs_.equation_count > 0) solver_->analyze(assembler_->pattern());  // all DOFs driven: nothing to factor
+  analyze();
   for (const MeshNode& n : model_.mesh.nodes) state_.push_back(n.reference);
   committed_state_ = state_;
   // Scales that keep the convergence test meaningful when the reference load is zero.
@@ -31,6 +45,39 @@ StaticAnalysis::StaticAnalysis(Model& model) : model_(model) {
   force_floor_ = 1e-12 * stiffest;
   length_scale_ = model_.elements.empty() ? 1.0 : total_length / model_.elements.size();
   internal_forces_.assign(6 * state_.size(), 0.0);
+}
+
+void StaticAnalysis::analyze() {
+  if (dofs_.equation_count == 0) return;  // all DOFs driven: nothing to factor
+  solver_->analyze(assembler_->pattern());
+  factorization_usable_ = false;
+}
+
+bool StaticAnalysis::solve_linear(std::vector<double>& rhs) {
+  const SolverOptions& opt = model_.options;
+  const Timer timer(statistics_.linear_seconds);
+  try {
+    if (factorization_usable_ && opt.krylov_iterations > 0) {
+      std::vector<double> x;
+      const KrylovResult k = gmres(assembler_->pattern(), values_, [this](std::vector<double>& v) { solver_->solve(v); },
+                                   rhs, x, opt.krylov_tolerance, opt.krylov_iterations);
+      statistics_.krylov_iterations += k.iterations;
+      // A preconditioner that needs more than half the allowed iterations has aged: refactor next time.
+      if (k.iterations > opt.krylov_iterations / 2) factorization_usable_ = false;
+      if (k.converged) {
+        ++statistics_.krylov_solves;
+        rhs = x;
+        return true;
+      }
+    }
+    solver_->factorize(values_);
+    factorization_usable_ = true;
+    solver_->solve(rhs);
+  } catch (const LinearSolverError&) {
+    factorization_usable_ = false;
+    return false;
+  }
+  return true;
 }
 
 void StaticAnalysis::update_slaves() {
@@ -58,7 +105,7 @@ bool StaticAnalysis::solve_increment(double step_fraction,
     else s.rotation = (quaternion_from_rotation_vector(delta * Vec3::Unit(key.component - 3)) * s.rotation).normalized();
   }
   update_slaves();
-  model_.contacts.begin_increment();
+  for (Interaction* interaction : model_.interactions()) interaction->begin_increment();
   const int n = dofs_.equation_count;
   std::vector<double> rhs(n);
   double increment_displacement2 = 0;
@@ -116,8 +163,16 @@ bool StaticAnalysis::solve_increment(double step_fraction,
     update_slaves();
     return norm2;
   };
+  auto accept_iterate = [&] {
+    for (Interaction* interaction : model_.interactions()) interaction->accept_iterate();
+  };
+  auto changes_at_convergence = [&] {
+    int changes = 0;
+    for (Interaction* interaction : model_.interactions()) changes += interaction->changes_at_convergence();
+    return changes;
+  };
   Residual current = evaluate_residual();
-  model_.contacts.activate_closed();
+  accept_iterate();
   // Newton iterations count from the last contact change (release or friction switch); the number of such
   // rounds per increment is capped separately.
   int since_change = 0, rounds = 0;
@@ -131,22 +186,22 @@ bool StaticAnalysis::solve_increment(double step_fraction,
     // weighted by the mean element length).
     if (current.forces_ok && (iteration == 0 || last_correction2_ <= opt.displacement_tolerance *
                                                                          opt.displacement_tolerance * increment_displacement2)) {
-      // Converged for this active set; contacts left in tension open and Newton goes on without them.
-      if (model_.contacts.release_tensile() == 0) return true;
+      // Converged for the interactions' current states (contact: active set, held friction); they may
+      // change them (contacts left in tension open) and Newton goes on.
+      if (changes_at_convergence() == 0) return true;
       if (++rounds > kMaxContactRounds) return false;
       since_change = 0;
       current = evaluate_residual();
-      model_.contacts.activate_closed();
+      accept_iterate();
       continue;
     }
     if (since_change == opt.max_iterations) return false;
-    assembler_->assemble(model_, state_, internal_forces_, &values_);
-    try {
-      solver_->factorize(values_);
-      solver_->solve(rhs);
-    } catch (const LinearSolverError&) {
-      return false;
+    ++statistics_.newton_iterations;
+    {
+      const Timer timer(statistics_.assembly_seconds);
+      assembler_->assemble(model_, state_, internal_forces_, &values_);
     }
+    if (!solve_linear(rhs)) return false;
     start = state_;
     correction = rhs;
     // Backtracking: while the full correction raises the residual (contact switching, stick/slip, large
@@ -160,7 +215,7 @@ bool StaticAnalysis::solve_increment(double step_fraction,
       trial = evaluate_residual();
     }
     current = trial;
-    model_.contacts.activate_closed();
+    accept_iterate();
     increment_displacement2 = 0;
     for (std::size_t node = 0; node < node_count; ++node) {
       const Vec3 rotation = rotation_vector_from_quaternion(state_[node].rotation * committed_state_[node].rotation.conjugate());
@@ -194,10 +249,12 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
       report.step_fraction = target;
       if (solve_increment(target, ramps, report, on_progress)) {
         for (BeamElement& e : model_.elements) e.commit();
-        if (model_.contacts.commit(model_.mesh, state_)) {
-          // Contact found new element pairs: the tangent's pattern grows and is analyzed again.
+        bool pattern_changed = false;
+        for (Interaction* interaction : model_.interactions()) pattern_changed |= interaction->commit(model_.mesh, state_);
+        if (pattern_changed) {
+          // New element pairs: the tangent's pattern grows and is analyzed again.
           assembler_ = std::make_unique<Assembler>(model_, dofs_);
-          if (dofs_.equation_count > 0) solver_->analyze(assembler_->pattern());  // all DOFs driven: nothing to factor
+          analyze();
         }
         committed_state_ = state_;
         committed_motion_ = applied_motion_;
@@ -209,6 +266,7 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
         if (size >= nominal) cutbacks = 0;
       } else {
         for (BeamElement& e : model_.elements) e.revert();
+        for (Interaction* interaction : model_.interactions()) interaction->revert();
         state_ = committed_state_;
         applied_motion_ = committed_motion_;
         assembler_->assemble(model_, state_, internal_forces_, nullptr);

@@ -22,6 +22,16 @@ struct IncrementReport {
   double residual_norm = 0;    // the final relative residual
 };
 
+// What the solver did: counts and wall time per phase (the linear solver's own figures are in
+// linear_statistics()).
+struct AnalysisStatistics {
+  int newton_iterations = 0;   // tangent assemblies
+  int krylov_solves = 0;       // linear solves done by GMRES with an older factorization
+  int krylov_iterations = 0;
+  double assembly_seconds = 0; // tangent assembly (elements and interactions) for Newton corrections
+  double linear_seconds = 0;   // factorizations, solves and GMRES
+};
+
 // Result of run(): 0 converged, otherwise a message saying where it stopped.
 struct AnalysisStatus {
   bool converged = true;
@@ -44,6 +54,8 @@ class StaticAnalysis {
   const DofMap& dofs() const { return dofs_; }
   const Model& model() const { return model_; }
   std::string linear_solver_name() const { return solver_->name(); }
+  const AnalysisStatistics& statistics() const { return statistics_; }
+  const LinearSolverStatistics& linear_statistics() const { return solver_->statistics(); }
 
  private:
   struct ActionKey {
@@ -53,6 +65,8 @@ class StaticAnalysis {
   bool solve_increment(double step_fraction, const std::map<ActionKey, std::pair<double, double>>& ramps,
                        IncrementReport& report, const std::function<void(const IncrementReport&)>& on_progress);
   void update_slaves();
+  void analyze();                              // symbolic analysis of the current pattern
+  bool solve_linear(std::vector<double>& rhs);  // rhs in, Newton correction out; false if the solve failed
 
   Model& model_;
   DofMap dofs_;
@@ -63,6 +77,8 @@ class StaticAnalysis {
   std::vector<double> internal_forces_, values_;
   double force_floor_ = 0, length_scale_ = 0;
   double last_correction2_ = 0;
+  bool factorization_usable_ = false;  // the last factorization may precondition GMRES on the current pattern
+  AnalysisStatistics statistics_;
 };
 
 }  // namespace strandfem

@@ -1,0 +1,49 @@
+// An interaction between wires beside the beam elements (wire contact now; clamps, loading saddles later):
+// one lifecycle that the Newton loop drives without knowing what the interaction is.
+#pragma once
+#include <array>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "strandfem/beam/beam_element.hpp"
+#include "strandfem/mesh/mesh.hpp"
+
+namespace strandfem {
+
+// Forces and moments on the six nodes of two 3-node elements (6 per node) and their derivative with
+// respect to the nodes' (displacement, spin) increments.
+using PairVector = Eigen::Matrix<double, 36, 1>;
+using PairMatrix = Eigen::Matrix<double, 36, 36>;
+
+// One evaluated contribution: internal nodal forces of two elements' nodes (a0, a1, a2, b0, b1, b2).
+struct PairContribution {
+  std::array<int, 6> nodes{};
+  std::pair<int, int> elements{-1, -1};  // mesh elements (a, b): their nodes' block of the pattern
+  const PairVector* force = nullptr;
+  const PairMatrix* tangent = nullptr;   // valid when evaluated with the tangent
+};
+
+class Interaction {
+ public:
+  virtual ~Interaction() = default;
+  // Mesh element pairs whose nodes it may couple (the tangent's sparsity pattern).
+  virtual const std::vector<std::pair<int, int>>& element_pairs() const = 0;
+  // Start of an increment from the last converged state.
+  virtual void begin_increment() = 0;
+  // Evaluates every contribution at `state` from the converged history (writes no history).
+  virtual void evaluate(const Mesh& mesh, const std::vector<NodeState>& state, bool with_tangent) = 0;
+  // The contributions of the last evaluation (only the active ones).
+  virtual void contributions(const Mesh& mesh, std::vector<PairContribution>& out) const = 0;
+  // After each accepted Newton iterate (e.g. points that closed become active).
+  virtual void accept_iterate() = 0;
+  // Once Newton has converged for the current state logic: how many states must change (0: accept).
+  virtual int changes_at_convergence() = 0;
+  // Converged increment at `state`: writes the history; true when element_pairs() changed.
+  virtual bool commit(const Mesh& mesh, const std::vector<NodeState>& state) = 0;
+  // Rejected increment (cut-back): the next begin_increment starts again from the converged history.
+  virtual void revert() = 0;
+};
+
+}  // namespace strandfem

@@ -1,0 +1,78 @@
+#include "strandfem/solver/krylov.hpp"
+
+#include <cmath>
+
+#include <Eigen/Core>
+
+namespace strandfem {
+
+void multiply(const SparsePattern& pattern, const std::vector<double>& values, const std::vector<double>& x,
+              std::vector<double>& y) {
+  y.assign(pattern.size, 0.0);
+  for (int c = 0; c < pattern.size; ++c)
+    for (int k = pattern.column_start[c]; k < pattern.column_start[c + 1]; ++k) y[pattern.row_index[k]] += values[k] * x[c];
+}
+
+KrylovResult gmres(const SparsePattern& pattern, const std::vector<double>& values,
+                   const std::function<void(std::vector<double>&)>& precondition, const std::vector<double>& b,
+                   std::vector<double>& x, double tolerance, int max_iterations) {
+  const int n = pattern.size;
+  KrylovResult result;
+  x.assign(n, 0.0);
+  using Vector = Eigen::VectorXd;
+  const Vector rhs = Eigen::Map<const Vector>(b.data(), n);
+  const double beta = rhs.norm();
+  if (beta == 0.0) {
+    result.converged = true;
+    result.relative_residual = 0;
+    return result;
+  }
+  // Arnoldi with modified Gram-Schmidt; Givens rotations keep the least-squares residual at hand.
+  std::vector<Vector> basis{rhs / beta};
+  Eigen::MatrixXd hessenberg = Eigen::MatrixXd::Zero(max_iterations + 1, max_iterations);
+  Vector cosines(max_iterations), sines(max_iterations), g = Vector::Zero(max_iterations + 1);
+  g[0] = beta;
+  std::vector<double> work(n), product(n);
+  int k = 0;
+  for (; k < max_iterations; ++k) {
+    Eigen::Map<Vector>(work.data(), n) = basis[k];
+    precondition(work);
+    multiply(pattern, values, work, product);
+    Vector w = Eigen::Map<const Vector>(product.data(), n);
+    for (int j = 0; j <= k; ++j) {
+      hessenberg(j, k) = w.dot(basis[j]);
+      w -= hessenberg(j, k) * basis[j];
+    }
+    const double next_norm = w.norm();
+    hessenberg(k + 1, k) = next_norm;
+    for (int j = 0; j < k; ++j) {
+      const double t = cosines[j] * hessenberg(j, k) + sines[j] * hessenberg(j + 1, k);
+      hessenberg(j + 1, k) = -sines[j] * hessenberg(j, k) + cosines[j] * hessenberg(j + 1, k);
+      hessenberg(j, k) = t;
+    }
+    const double r = std::hypot(hessenberg(k, k), hessenberg(k + 1, k));
+    cosines[k] = hessenberg(k, k) / r;
+    sines[k] = hessenberg(k + 1, k) / r;
+    hessenberg(k, k) = r;
+    hessenberg(k + 1, k) = 0;
+    g[k + 1] = -sines[k] * g[k];
+    g[k] = cosines[k] * g[k];
+    result.relative_residual = std::abs(g[k + 1]) / beta;
+    if (result.relative_residual <= tolerance || !(next_norm > 0.0)) {
+      ++k;
+      break;
+    }
+    basis.push_back(w / next_norm);
+  }
+  result.iterations = k;
+  // x = M^-1 V y with H y = g (upper triangular after the rotations).
+  const Vector y = hessenberg.topLeftCorner(k, k).triangularView<Eigen::Upper>().solve(g.head(k));
+  Vector combination = Vector::Zero(n);
+  for (int j = 0; j < k; ++j) combination += y[j] * basis[j];
+  Eigen::Map<Vector>(x.data(), n) = combination;
+  precondition(x);
+  result.converged = result.relative_residual <= tolerance && std::isfinite(result.relative_residual);
+  return result;
+}
+
+}  // namespace strandfem

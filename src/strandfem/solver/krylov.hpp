@@ -1,0 +1,27 @@
+// Restarted GMRES, right-preconditioned, on a CSC matrix: solves the current tangent with an older factorization
+// as preconditioner, so that Newton keeps the exact tangent's convergence without refactoring every iteration.
+#pragma once
+#include <functional>
+#include <vector>
+
+#include "strandfem/solver/linear_solver.hpp"
+
+namespace strandfem {
+
+struct KrylovResult {
+  bool converged = false;
+  int iterations = 0;             // preconditioned matrix-vector products
+  double relative_residual = 1;   // ||b - A x|| / ||b|| at the end (the true residual: right preconditioning)
+};
+
+// y = A x for A in `pattern` with `values` (sequential: the sums do not depend on the thread count).
+void multiply(const SparsePattern& pattern, const std::vector<double>& values, const std::vector<double>& x,
+              std::vector<double>& y);
+
+// Solves A x = b from x = 0; `precondition` overwrites its argument v with M^-1 v. Stops when
+// ||b - A x|| <= tolerance ||b|| or after max_iterations (no restart: the preconditioner is meant to be good).
+KrylovResult gmres(const SparsePattern& pattern, const std::vector<double>& values,
+                   const std::function<void(std::vector<double>&)>& precondition, const std::vector<double>& b,
+                   std::vector<double>& x, double tolerance, int max_iterations);
+
+}  // namespace strandfem
