@@ -6,7 +6,7 @@ packages=(
   libeigen3-dev libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libfmt-dev
   libsuitesparse-dev libmumps-seq-dev libmetis-dev libopenblas0-pthread libopenblas-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  python3-matplotlib python3-numpy
+  python3-matplotlib python3-numpy python3-yaml
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -178,6 +178,45 @@ TEST(ContactTangent, PointContactFrictionlessStickSlipOrthotropic) {
   }
 }
 
+// The smoothed normal law: C1 at both ends of its band, quadratic inside, exact tangent there.
+TEST(ContactForceLaw, SmoothedNormalLawIsC1AndItsTangentExact) {
+  const double k = 1e4, s = 0.3, h = 1e-7;
+  EXPECT_NEAR(normal_force(k, s, -s), k * s, 1e-9);
+  EXPECT_NEAR(normal_force(k, s, -s - h), normal_force(k, s, -s + h), 3 * k * h);
+  EXPECT_NEAR((normal_force(k, s, -s + h) - normal_force(k, s, -s - h)) / (2 * h), -k, 1e-3 * k);
+  EXPECT_EQ(normal_force(k, s, s), 0.0);
+  EXPECT_NEAR((normal_force(k, s, s - h) - normal_force(k, s, s - 2 * h)) / h, 0.0, 1e-3 * k);
+  EXPECT_DOUBLE_EQ(normal_force(k, s, 0.0), k * s / 4);
+  PairFixture f(M_PI / 2, 1.8);
+  ContactPoint p = make_point(ContactKind::kPoint);
+  p.stiffness.smoothing = s;
+  const ContactResponse r = response_at(p, f, false, Vec3::UnitX());
+  ASSERT_GT(r.gap, -s);
+  ASSERT_LT(r.gap, s);
+  EXPECT_NEAR(r.normal_force, k / (4 * s) * (r.gap - s) * (r.gap - s), 1e-9 * k);
+  EXPECT_LT(tangent_error(p, f, Vec3::UnitX(), ContactStatus::kStick), 1e-6);
+  set_stick(p, f, 0.2, 0.1);
+  EXPECT_LT(tangent_error(p, f, Vec3::UnitX(), ContactStatus::kSlip), 1e-6);
+}
+
+// The elastic-slip law: stick stiffness mu P / s from the current pressure, exact tangent in stick and slip;
+// a point slides once its elastic slip exceeds s, whatever the pressure.
+TEST(ContactTangent, ElasticSlipLaw) {
+  PairFixture f(0.5, 1.8);
+  ContactPoint p = make_point(ContactKind::kPoint);
+  p.allowed_slip = 0.05;
+  set_stick(p, f, 0.005, 0.002);
+  const ContactResponse stick = response_at(p, f, false, Vec3::UnitX());
+  ASSERT_LT(stick.tangential_gap.norm(), p.allowed_slip);
+  EXPECT_NEAR(stick.friction.norm(), p.mu1 * stick.normal_force / p.allowed_slip * stick.tangential_gap.norm(), 1e-9);
+  EXPECT_LT(tangent_error(p, f, Vec3::UnitX(), ContactStatus::kStick), 1e-6);
+  set_stick(p, f, 0.2, 0.1);
+  const ContactResponse slip = response_at(p, f, false, Vec3::UnitX());
+  ASSERT_GT(slip.tangential_gap.norm(), p.allowed_slip);
+  EXPECT_NEAR(slip.friction.norm(), p.mu1 * slip.normal_force, 1e-9 * slip.normal_force);
+  EXPECT_LT(tangent_error(p, f, Vec3::UnitX(), ContactStatus::kSlip), 1e-6);
+}
+
 TEST(ContactTangent, LineContactStickSlipOrthotropic) {
   // Slave a nearly parallel to master b (5 degrees), side by side.
   PairFixture f(0.09, 0.0);

@@ -17,11 +17,7 @@ constexpr int kMaxNormalSwitches = 4;              // held friction switches per
 }  // namespace
 
 void ContactSet::begin_increment() {
-  const bool elastic_slip = settings_.tangential_penalty == TangentialPenalty::kElasticSlip;
   for (ContactPoint& p : points_) {
-    // Held for the increment, so that the force law stays a function of the current state alone.
-    if (elastic_slip && p.history.closed)
-      p.stiffness.tangential = std::max(p.mu1, p.mu2) * p.history.normal_force / p.allowed_slip;
     p.active = p.history.closed;
     p.normal_switches = 0;
     p.friction_switches = 0;

@@ -27,7 +27,6 @@ inline double element_parameter(double coordinate, int element_in_wire) { return
 // History of a contact point; written only when an increment converges.
 struct ContactHistory {
   bool closed = false;             // in contact at the last converged state
-  double normal_force = 0;         // P at the last converged state: N (point) or N/mm (line)
   double stick_a = 0, stick_b = 0; // wire coordinates of the stick points on the slave (a) and master (b)
   // The stick points are on the wire surfaces: unit directions from the centerline to the surface point,
   // fixed in each wire's section (reference section axes), so that a wire rolling or turning about its
@@ -55,7 +54,7 @@ struct ContactPoint {
   double gap_offset = 0;           // subtracted from the gap: the reference overlap (<= 0) or 0
   PenaltyStiffness stiffness;
   double mu1 = 0, mu2 = 0;         // along the strand axis projected on the contact plane, and across
-  double allowed_slip = 0;         // elastic slip (mm) at which the elastic-slip penalty reaches the cone
+  double allowed_slip = 0;         // elastic-slip law: slip (mm) at which the stick force reaches the cone; 0: eq. 2.6
   ContactHistory history;
   // Working active set of the current increment (not history). An active point keeps its penalty force
   // P = -k_n g even when the gap opens (tension) until Newton has converged; only then are tensile points
@@ -98,6 +97,16 @@ struct StickAnchor {
   Vec3 direction_a = Vec3::Zero(), direction_b = Vec3::Zero();
 };
 
+// Normal force for gap g: the penalty law -k_n g, or with smoothing s > 0 the C1 law that sets in
+// quadratically, k_n (g - s)^2 / (4 s) for |g| < s, zero beyond s (never a tension).
+template <class T>
+T normal_force(double stiffness, double smoothing, const T& gap) {
+  if (smoothing <= 0.0 || value_of(gap) <= -smoothing) return -stiffness * gap;
+  if (value_of(gap) >= smoothing) return T(0.0);
+  const T opening = gap - smoothing;
+  return stiffness / (4.0 * smoothing) * opening * opening;
+}
+
 // Internal nodal forces and moments (a0, a1, a2, b0, b1, b2; entry 2k force, 2k+1 moment of node k) of a
 // contact point for the given element poses and converged parameters xi, eta (doubles). T = double for the
 // value, a dual number for the tangent (the parameters then get one Newton step in T, which gives their
@@ -132,10 +141,12 @@ ContactForces<T> contact_forces(const ContactPoint& point, const ElementPose<T>&
   out.gap = distance - (point.radius_a + point.radius_b) - point.gap_offset;
   // Touching (gap 0 to round-off, as every offset point is at the start) counts as closed: the first
   // Newton iteration then sees the contact stiffness instead of letting wires fly through each other.
-  if (!point.active && value_of(out.gap) > kContactActivation * (point.radius_a + point.radius_b)) return out;
+  const double smoothing = point.stiffness.smoothing;
+  const double activation = std::max(kContactActivation * (point.radius_a + point.radius_b), smoothing);
+  if (!point.active && value_of(out.gap) > activation) return out;
   const V3<T>& n = out.normal;
   out.status = ContactStatus::kStick;
-  out.normal_force = -point.stiffness.normal * out.gap;
+  out.normal_force = normal_force(point.stiffness.normal, smoothing, out.gap);
   V3<T> total = scale(out.normal_force, n);
   const bool frictional = point.history.closed && point.mu1 > 0;
   if (frictional) {
@@ -143,7 +154,8 @@ ContactForces<T> contact_forces(const ContactPoint& point, const ElementPose<T>&
     const V3<T> separation = sub(surface_point(a, anchor.xi, point.radius_a, anchor.direction_a),
                                  surface_point(b, anchor.eta, point.radius_b, anchor.direction_b));
     out.tangential_gap = sub(separation, scale(dot(n, separation), n));
-    const FrictionLaw law{point.mu1, point.mu2, point.stiffness.tangential, point.friction_mode, point.slip_direction};
+    const FrictionLaw law{point.mu1, point.mu2, point.stiffness.tangential, point.allowed_slip, point.friction_mode,
+                          point.slip_direction};
     const FrictionForce<T> f = friction_force(law, n, out.tangential_gap, out.normal_force, axis);
     out.friction = f.force;
     out.trial_friction = f.trial;

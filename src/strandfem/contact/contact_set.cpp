@@ -117,6 +117,9 @@ void ContactSet::initialize(const Mesh& mesh, const ContactSettings& settings) {
   for (const MeshNode& n : mesh.nodes) reference_.push_back(n.reference);
   search(mesh, reference_);
   responses_.assign(points_.size(), ContactResponse{});
+  // Wires touching in the reference configuration stick there from the start (no frictionless first
+  // increment in which whole layers turn around the core held by the end planes only).
+  commit(mesh, reference_);
 }
 
 void ContactSet::search(const Mesh& mesh, const std::vector<NodeState>& state) {
@@ -197,7 +200,7 @@ void ContactSet::set_point_properties(const Mesh& mesh, ContactPoint& p, const V
   p.mu1 = settings_.friction_at(sa.material().name, sb.material().name, reference_position.dot(settings_.strand_axis));
   p.mu2 = p.mu1 * settings_.orthotropy_ratio;
   p.stiffness = penalty_stiffness(settings_, p.kind == ContactKind::kLine, modulus, diameter, element_size, p.mu1);
-  p.allowed_slip = settings_.elastic_slip * element_size;
+  p.allowed_slip = settings_.tangential_penalty == TangentialPenalty::kElasticSlip ? settings_.elastic_slip * element_size : 0.0;
 }
 
 void ContactSet::add_line_points(const Mesh& mesh, int group) {
@@ -333,10 +336,10 @@ bool ContactSet::commit(const Mesh& mesh, const std::vector<NodeState>& state) {
       p.element_b = r.element_b;
     }
     h.slipping = r.status == ContactStatus::kSlip && r.tangential_gap.norm() > 0;
-    if (r.status == ContactStatus::kOpen || !(r.normal_force > 0)) {
-      // An opened contact forgets its stick point; the slip it accumulated stays on record.
+    if (r.status == ContactStatus::kOpen || r.normal_force < 0) {
+      // An opened contact forgets its stick point; the slip it accumulated stays on record. A touching
+      // point at zero force keeps it: friction is there as soon as pressure builds.
       h.closed = false;
-      h.normal_force = 0;
       h.slipping = false;
       h.slip_since_reversal = 0;
       h.slip_direction.setZero();
@@ -347,7 +350,6 @@ bool ContactSet::commit(const Mesh& mesh, const std::vector<NodeState>& state) {
     const auto [element_a, element_b] = elements_of(mesh, static_cast<int>(i));
     const Vec3 direction_a = section_direction(pose(mesh, state, element_a), r.xi, -r.normal);
     const Vec3 direction_b = section_direction(pose(mesh, state, element_b), r.eta, r.normal);
-    h.normal_force = r.normal_force;
     if (!h.closed) {
       h.closed = true;
       h.stick_a = sa;

@@ -26,6 +26,7 @@ void ContactSettings::validate() const {
   }
   require_positive(orthotropy_ratio, "orthotropy_ratio");
   require_positive(elastic_slip, "elastic_slip");
+  if (!(normal_smoothing >= 0)) throw std::invalid_argument("contact.normal_smoothing must be >= 0 (mm)");
   require_positive(search_margin, "search_margin");
   if (!(touch_tolerance >= 0 && touch_tolerance < 0.5)) throw std::invalid_argument("contact.touch_tolerance must be in [0, 0.5)");
   if (!(line_contact_angle > 0 && line_contact_angle < 90))
@@ -47,6 +48,7 @@ PenaltyStiffness penalty_stiffness(const ContactSettings& s, bool line_contact, 
                                    double element_size, double friction) {
   PenaltyStiffness k;
   k.normal = s.normal_factor * youngs_modulus * diameter * s.normal_multiplier;
+  k.smoothing = s.normal_smoothing;
   // mu = 0 would give no stick stiffness at all; frictionless contacts need none.
   k.tangential = s.tangential_factor * friction * youngs_modulus * diameter * diameter * s.tangential_multiplier / element_size;
   if (line_contact) {

@@ -59,6 +59,9 @@ struct ContactSettings {
   // With kOffset, reference gaps below this fraction of r_a + r_b are offset too (not only overlaps):
   // the quadratic interpolation of a helix leaves gaps of order 1e-4 mm between wires meant to touch.
   double touch_tolerance = 0.002;
+  // Width (mm) of the gap band |g| < s over which the normal force sets in smoothly (C1, quadratic), so that
+  // contacts near zero force do not switch one by one; 0: the plain penalty law with the active set.
+  double normal_smoothing = 0.0;
 
   // Throws std::invalid_argument naming the contact.* key that is wrong.
   void validate() const;
@@ -70,6 +73,7 @@ struct ContactSettings {
 struct PenaltyStiffness {
   double normal = 0;      // N/mm (point) or N/mm^2 (line)
   double tangential = 0;  // same units
+  double smoothing = 0;   // mm: width over which the normal force sets in (0: the plain penalty law)
 };
 
 // youngs_modulus and diameter: the softer material and the thinner wire of the pair; element_size: h,

@@ -1,6 +1,7 @@
 // Coulomb friction at a contact point: the penalty-regularized return mapping on an elliptic (orthotropic)
 // cone and the held stick/slip states used within an increment; templated for exact linearization.
 #pragma once
+#include <algorithm>
 #include <cmath>
 
 #include "strandfem/core/dual.hpp"
@@ -15,7 +16,10 @@ enum class FrictionMode { kFree, kHeldStick, kHeldSlip };  // see ContactPoint::
 // Parameters and working state of the friction law at one contact point.
 struct FrictionLaw {
   double mu1 = 0, mu2 = 0;          // along the strand axis projected on the contact plane, and across
-  double tangential_stiffness = 0;  // k_t: N/mm (point) or N/mm^2 (line)
+  double tangential_stiffness = 0;  // k_t: N/mm (point) or N/mm^2 (line), when allowed_slip is 0
+  // > 0: the elastic-slip law, k_t = max(mu1, mu2) P / allowed_slip with the current P: a point sticks while
+  // its elastic slip |g_T| (in the mu-metric) stays below allowed_slip, whatever the pressure.
+  double allowed_slip = 0;
   FrictionMode mode = FrictionMode::kFree;
   V3<double> slip_direction{0.0, 0.0, 0.0};  // held slip: unit direction of the friction force
 };
@@ -36,7 +40,8 @@ template <class T>
 FrictionForce<T> friction_force(const FrictionLaw& law, const V3<T>& n, const V3<T>& tangential_gap, const T& P,
                                 const Vec3& axis) {
   FrictionForce<T> f;
-  f.trial = scale(-law.tangential_stiffness, tangential_gap);
+  const T stiffness = law.allowed_slip > 0 ? std::max(law.mu1, law.mu2) / law.allowed_slip * P : T(law.tangential_stiffness);
+  f.trial = scale(-stiffness, tangential_gap);
   const V3<T> strand_axis{T(axis[0]), T(axis[1]), T(axis[2])};
   V3<T> d1 = sub(strand_axis, scale(dot(n, strand_axis), n));
   d1 = scale(1.0 / sqrt(dot(d1, d1)), d1);

@@ -18,7 +18,7 @@ ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Nod
   reader.check_keys(node, "contact", {"enabled", "friction", "friction_pairs", "friction_zones", "orthotropy_ratio",
                                        "normal_factor", "tangential_factor", "normal_multiplier", "tangential_multiplier",
                                        "search_margin", "line_contact_angle", "line_points", "initial_overlap", "touch_tolerance", "axis",
-                                       "tangential_penalty", "elastic_slip"});
+                                       "tangential_penalty", "elastic_slip", "normal_smoothing"});
   ContactSettings c;
   c.enabled = node["enabled"] ? reader.boolean(node["enabled"], "contact.enabled") : true;
   auto friction = [&](const YAML::Node& n, const std::string& path) {
@@ -61,6 +61,8 @@ ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Nod
   positive("tangential_multiplier", c.tangential_multiplier, "-");
   positive("search_margin", c.search_margin, "mm");
   positive("elastic_slip", c.elastic_slip, "fraction of the contact element length");
+  if (node["normal_smoothing"])
+    c.normal_smoothing = reader.non_negative(node["normal_smoothing"], "contact.normal_smoothing", "mm");
   if (node["tangential_penalty"])
     c.tangential_penalty = reader.choice(node["tangential_penalty"], "contact.tangential_penalty", {"paper", "elastic_slip"}) == "paper"
                                ? TangentialPenalty::kPaper : TangentialPenalty::kElasticSlip;

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
+#include <cstdlib>
 #include <cmath>
 
 #include "strandfem/solver/krylov.hpp"
@@ -44,6 +46,9 @@ StaticAnalysis::StaticAnalysis(Model& model) : model_(model) {
   }
   force_floor_ = 1e-12 * stiffest;
   length_scale_ = model_.elements.empty() ? 1.0 : total_length / model_.elements.size();
+  Eigen::AlignedBox3d box;
+  for (const NodeState& n : state_) box.extend(n.position);
+  model_extent2_ = state_.empty() ? 0.0 : std::max(box.diagonal().squaredNorm(), length_scale_ * length_scale_);
   internal_forces_.assign(6 * state_.size(), 0.0);
 }
 
@@ -208,6 +213,16 @@ bool StaticAnalysis::solve_increment(double step_fraction,
     // rotations), halve it, at most opt.line_search_cuts times; the last try is kept either way.
     double alpha = 1;
     last_correction2_ = apply_correction(alpha);
+    if (std::getenv("SF_DEBUG")) {
+      double umax = 0; int closed = 0, active = 0, slip = 0;
+      std::size_t worst = 0;
+      for (std::size_t node = 0; node < node_count; ++node) if ((state_[node].position - start[node].position).norm() > umax) { umax = (state_[node].position - start[node].position).norm(); worst = node; }
+      const Vec3 du = state_[worst].position - start[worst].position; const Vec3 x = state_[worst].position;
+      fprintf(stderr, "    dbg: worst node %zu wire %d at (%.2f %.2f %.2f) du (%.3e %.3e %.3e)\n", worst, model_.mesh.nodes[worst].wire, x.x(), x.y(), x.z(), du.x(), du.y(), du.z());
+      for (Interaction* it : model_.interactions()) { (void)it; }
+      for (std::size_t i = 0; i < model_.contacts.points().size(); ++i) { active += model_.contacts.points()[i].active; closed += model_.contacts.responses()[i].status != ContactStatus::kOpen; slip += model_.contacts.responses()[i].status == ContactStatus::kSlip; }
+      fprintf(stderr, "    dbg: max |du| %.3e, active %d, closed(before) %d slip %d\n", umax, active, closed, slip);
+    }
     Residual trial = evaluate_residual();
     for (int cut = 0; cut < opt.line_search_cuts && !(trial.relative <= current.relative); ++cut) {
       alpha *= 0.5;
@@ -216,6 +231,8 @@ bool StaticAnalysis::solve_increment(double step_fraction,
     }
     current = trial;
     accept_iterate();
+    // A correction longer than the model itself is divergence, not progress: cut back at once.
+    if (last_correction2_ > model_extent2_) return false;
     increment_displacement2 = 0;
     for (std::size_t node = 0; node < node_count; ++node) {
       const Vec3 rotation = rotation_vector_from_quaternion(state_[node].rotation * committed_state_[node].rotation.conjugate());
@@ -239,6 +256,7 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
     }
     const double nominal = 1.0 / std::max(1, step.increments);
     double fraction = 0, size = nominal;
+    double largest_size = nominal;  // below the smallest increment that failed in this step
     int converged_increments = 0, cutbacks = 0;
     while (fraction < 1.0 - 1e-12) {
       const double target = std::min(1.0, fraction + size);
@@ -261,9 +279,10 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
         fraction = target;
         ++converged_increments;
         if (on_increment) on_increment(report);
-        // Regrow after an easy increment, never beyond the nominal size.
-        if (cutbacks > 0 && report.iterations <= 4) size = std::min(nominal, 2.0 * size);
-        if (size >= nominal) cutbacks = 0;
+        // Regrow after an easy increment, never to a size that failed in this step (each retry of a size
+        // that fails costs a whole failed increment) nor beyond the nominal size.
+        if (cutbacks > 0 && report.iterations <= 4) size = std::min(largest_size, 2.0 * size);
+        if (size >= largest_size) cutbacks = 0;
       } else {
         for (BeamElement& e : model_.elements) e.revert();
         for (Interaction* interaction : model_.interactions()) interaction->revert();
@@ -278,6 +297,7 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
                            " increment cut-backs (last relative residual " + std::to_string(report.residual_norm) + ")";
           return status;
         }
+        largest_size = std::min(largest_size, 0.5 * size);
         size *= 0.5;
       }
     }

@@ -76,6 +76,7 @@ class StaticAnalysis {
   std::map<ActionKey, double> applied_motion_, committed_motion_;
   std::vector<double> internal_forces_, values_;
   double force_floor_ = 0, length_scale_ = 0;
+  double model_extent2_ = 0;  // squared diagonal of the reference bounding box
   double last_correction2_ = 0;
   bool factorization_usable_ = false;  // the last factorization may precondition GMRES on the current pattern
   AnalysisStatistics statistics_;
