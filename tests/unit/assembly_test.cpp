@@ -77,16 +77,23 @@ solver: {force_tolerance: 1.0e-8, moment_tolerance: 1.0e-8}
     fd.col(eq) = (free_residual(c.model, dofs, assembler, state, eq, h) - free_residual(c.model, dofs, assembler, state, eq, -h)) / (2 * h);
   EXPECT_LT((fd - K).norm() / K.norm(), 1e-6);
   if (c.model.contact_settings.enabled) {
-    int closed = 0;
-    for (const ContactResponse& r : c.model.contacts.responses()) closed += r.status != ContactStatus::kOpen;
+    int closed = 0, frictional = 0;
+    for (std::size_t i = 0; i < c.model.contacts.points().size(); ++i) {
+      const bool is_closed = c.model.contacts.responses()[i].status != ContactStatus::kOpen;
+      closed += is_closed;
+      frictional += is_closed && c.model.contacts.points()[i].history.closed && c.model.contacts.points()[i].mu1 > 0;
+    }
     EXPECT_GT(closed, 0) << "the check must run with closed contacts";
+    if (c.model.contact_settings.friction > 0) EXPECT_GT(frictional, 0) << "and with surface friction (stick anchors set)";
   }
 }
 
 TEST(AssemblyTest, TiedStrandTangentMatchesFiniteDifferences) { check_tied_strand_tangent(""); }
 
+// Surface friction: the spins of both wires enter the tangential gap and the friction moments.
 TEST(AssemblyTest, TiedStrandWithFrictionalContactTangentMatchesFiniteDifferences) {
   check_tied_strand_tangent("contact: {friction: 0.3}\n");
+  check_tied_strand_tangent("contact: {friction: 0.3, tangential_penalty: paper}\n");
 }
 
 }  // namespace

@@ -57,8 +57,9 @@ struct ContactSettings {
   int line_points = 4;  // Gauss points per slave element for line contacts
   InitialOverlap initial_overlap = InitialOverlap::kOffset;
   // With kOffset, reference gaps below this fraction of r_a + r_b are offset too (not only overlaps):
-  // the quadratic interpolation of a helix leaves gaps of order 1e-4 mm between wires meant to touch.
-  double touch_tolerance = 0.002;
+  // the quadratic interpolation of a helix leaves gaps of order 1e-4 mm between wires meant to touch, and
+  // the nominal layer radii leave crossing gaps of a few 1e-2 mm on which outer wires would float.
+  double touch_tolerance = 0.02;
   // Width (mm) of the gap band |g| < s over which the normal force sets in smoothly (C1, quadratic), so that
   // contacts near zero force do not switch one by one; 0: the plain penalty law with the active set.
   double normal_smoothing = 0.0;

@@ -14,6 +14,7 @@ namespace strandfem {
 
 namespace {
 constexpr int kMaxContactRounds = 40;  // contact set changes per increment before a cut-back
+constexpr int kEasyIncrementsBeforeRegrowth = 3;
 
 // Adds the wall time of its scope to a total.
 class Timer {
@@ -256,7 +257,8 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
     }
     const double nominal = 1.0 / std::max(1, step.increments);
     double fraction = 0, size = nominal;
-    double largest_size = nominal;  // below the smallest increment that failed in this step
+    double largest_size = nominal;  // cap on the increment size after a failure (see below)
+    int easy_at_cap = 0;
     int converged_increments = 0, cutbacks = 0;
     while (fraction < 1.0 - 1e-12) {
       const double target = std::min(1.0, fraction + size);
@@ -279,10 +281,17 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
         fraction = target;
         ++converged_increments;
         if (on_increment) on_increment(report);
-        // Regrow after an easy increment, never to a size that failed in this step (each retry of a size
-        // that fails costs a whole failed increment) nor beyond the nominal size.
-        if (cutbacks > 0 && report.iterations <= 4) size = std::min(largest_size, 2.0 * size);
-        if (size >= largest_size) cutbacks = 0;
+        // Regrow after an easy increment, but not straight back to a size that just failed (each retry that
+        // fails costs a whole failed increment): that cap doubles after kEasyIncrementsBeforeRegrowth easy
+        // increments at it, never beyond the nominal size.
+        const bool easy = report.iterations <= 4;
+        easy_at_cap = easy && size >= largest_size ? easy_at_cap + 1 : 0;
+        if (easy_at_cap >= kEasyIncrementsBeforeRegrowth && largest_size < nominal) {
+          largest_size = std::min(nominal, 2.0 * largest_size);
+          easy_at_cap = 0;
+        }
+        if (easy) size = std::min(largest_size, 2.0 * size);
+        cutbacks = 0;
       } else {
         for (BeamElement& e : model_.elements) e.revert();
         for (Interaction* interaction : model_.interactions()) interaction->revert();
@@ -298,6 +307,7 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
           return status;
         }
         largest_size = std::min(largest_size, 0.5 * size);
+        easy_at_cap = 0;
         size *= 0.5;
       }
     }
