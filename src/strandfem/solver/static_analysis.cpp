@@ -4,8 +4,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
 
 #include "strandfem/solver/krylov.hpp"
@@ -214,16 +212,6 @@ bool StaticAnalysis::solve_increment(double step_fraction,
     // rotations), halve it, at most opt.line_search_cuts times; the last try is kept either way.
     double alpha = 1;
     last_correction2_ = apply_correction(alpha);
-    if (std::getenv("SF_DEBUG")) {
-      double umax = 0; int closed = 0, active = 0, slip = 0;
-      std::size_t worst = 0;
-      for (std::size_t node = 0; node < node_count; ++node) if ((state_[node].position - start[node].position).norm() > umax) { umax = (state_[node].position - start[node].position).norm(); worst = node; }
-      const Vec3 du = state_[worst].position - start[worst].position; const Vec3 x = state_[worst].position;
-      fprintf(stderr, "    dbg: worst node %zu wire %d at (%.2f %.2f %.2f) du (%.3e %.3e %.3e)\n", worst, model_.mesh.nodes[worst].wire, x.x(), x.y(), x.z(), du.x(), du.y(), du.z());
-      for (Interaction* it : model_.interactions()) { (void)it; }
-      for (std::size_t i = 0; i < model_.contacts.points().size(); ++i) { active += model_.contacts.points()[i].active; closed += model_.contacts.responses()[i].status != ContactStatus::kOpen; slip += model_.contacts.responses()[i].status == ContactStatus::kSlip; }
-      fprintf(stderr, "    dbg: max |du| %.3e, active %d, closed(before) %d slip %d\n", umax, active, closed, slip);
-    }
     Residual trial = evaluate_residual();
     for (int cut = 0; cut < opt.line_search_cuts && !(trial.relative <= current.relative); ++cut) {
       alpha *= 0.5;
