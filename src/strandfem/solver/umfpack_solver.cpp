@@ -28,8 +28,8 @@ class UmfpackSolver final : public LinearSolver {
  public:
   UmfpackSolver() {
     umfpack_di_defaults(control_);
-    // METIS ordering was 3-7x faster than AMD on strand tangents (docs/performance.md). Debian's UMFPACK
-    // reaches METIS through CHOLMOD, and the ordering read back after analysis confirms it ran.
+    // METIS, as for MUMPS (on contact-free strand tangents the ordering barely matters: docs/performance.md).
+    // Debian's UMFPACK reaches METIS through CHOLMOD, and the ordering read back after analysis confirms it ran.
     control_[UMFPACK_ORDERING] = UMFPACK_ORDERING_METIS;
   }
   ~UmfpackSolver() override { release(); }
