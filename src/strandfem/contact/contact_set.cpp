@@ -345,6 +345,7 @@ bool ContactSet::commit(const Mesh& mesh, const std::vector<NodeState>& state) {
       h.slip_direction.setZero();
       continue;
     }
+    if (h.closed && r.status != ContactStatus::kSlip) continue;  // sticking: the anchors stay
     const double sa = wire_coordinate(p.element_a, r.xi), sb = wire_coordinate(r.element_b, r.eta);
     // Section-fixed directions of the current contact point on both surfaces.
     const auto [element_a, element_b] = elements_of(mesh, static_cast<int>(i));
@@ -356,8 +357,8 @@ bool ContactSet::commit(const Mesh& mesh, const std::vector<NodeState>& state) {
       h.stick_b = sb;
       h.stick_direction_a = direction_a;
       h.stick_direction_b = direction_b;
-    } else if (r.status == ContactStatus::kSlip) {
-      // Pull the stick points toward the current contact points so that k_t |g_T| = |Q| on the cone.
+    } else {
+      // Slipping: pull the stick points toward the current contact points so that k_t |g_T| = |Q| on the cone.
       const double c = r.slip_ratio;
       h.stick_a = sa + (h.stick_a - sa) * c;
       h.stick_b = sb + (h.stick_b - sb) * c;
