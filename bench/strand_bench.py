@@ -3,10 +3,12 @@
 iterations, factorizations, GMRES iterations, time in assembly and linear solves, the ordering that actually ran,
 factor entries and flops, and the axial slope against the fixed-end linear strand theory.
 
-    bench/strand_bench.py [--program build/apps/strandfem] [--frictionless] [--threads N] CASE.yaml ...
+    bench/strand_bench.py [--program build/apps/strandfem] [--frictionless] [--threads N]
+                          [--set solver.extrapolate=false ...] CASE.yaml ...
 
 --frictionless also runs each case with contact.friction (and its pairs and zones) set to 0, so that the
-effect of friction on the slope and the cost shows beside it. Results go to a temporary folder per run.
+effect of friction on the slope and the cost shows beside it. --set overrides a case key (dotted path, YAML
+value) in every run. Results go to a temporary folder per run.
 """
 import argparse
 import csv
@@ -20,14 +22,21 @@ import time
 import yaml
 
 
-def frictionless_copy(path, folder):
+def modified_copy(path, folder, overrides, frictionless):
     with open(path) as f:
         case = yaml.safe_load(f)
-    contact = case.setdefault("contact", {})
-    contact["friction"] = 0.0
-    contact.pop("friction_pairs", None)
-    contact.pop("friction_zones", None)
-    out = os.path.join(folder, "frictionless_" + os.path.basename(path))
+    for key, value in overrides:
+        node = case
+        *parents, leaf = key.split(".")
+        for name in parents:
+            node = node.setdefault(name, {})
+        node[leaf] = value
+    if frictionless:
+        contact = case.setdefault("contact", {})
+        contact["friction"] = 0.0
+        contact.pop("friction_pairs", None)
+        contact.pop("friction_zones", None)
+    out = os.path.join(folder, ("frictionless_" if frictionless else "") + os.path.basename(path))
     with open(out, "w") as f:
         yaml.safe_dump(case, f)
     return out
@@ -74,12 +83,18 @@ def main():
     parser.add_argument("--program", default=os.path.join(os.path.dirname(__file__), "..", "build", "apps", "strandfem"))
     parser.add_argument("--frictionless", action="store_true")
     parser.add_argument("--threads", type=int, default=0)
+    parser.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
+                        help="override a case key in every run, e.g. solver.extrapolate=false")
     args = parser.parse_args()
+    overrides = []
+    for item in args.set:
+        key, _, value = item.partition("=")
+        overrides.append((key, yaml.safe_load(value)))
     for case in args.cases:
-        variants = [("friction", case)]
         with tempfile.TemporaryDirectory() as folder:
+            variants = [("friction", modified_copy(case, folder, overrides, False) if overrides else case)]
             if args.frictionless:
-                variants.append(("frictionless", frictionless_copy(case, folder)))
+                variants.append(("frictionless", modified_copy(case, folder, overrides, True)))
             for label, path in variants:
                 with tempfile.TemporaryDirectory() as run_folder:
                     row = run(args.program, path, args.threads, run_folder)

@@ -1,4 +1,5 @@
-// GMRES against a direct solve: exact preconditioner in one iteration, an older factorization in a few.
+// GMRES against a direct solve: exact preconditioner in one iteration, an older factorization in a few, and an
+// early stop when the preconditioner is too far off.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -47,6 +48,23 @@ TEST(Krylov, GmresWithAFactorizationOfANearbyMatrixConvergesInFewIterations) {
     solver->factorize(older);
     EXPECT_FALSE(gmres(pattern, current, [&](std::vector<double>& v) { solver->solve(v); }, b, x, 1e-14, 2).converged) << name;
   }
+}
+
+// A preconditioner far from the matrix (identity for a matrix of spread spectrum): after four iterations the
+// mean reduction cannot reach the tolerance within the allowed count, so GMRES gives up instead of spending it.
+TEST(Krylov, GmresGivesUpEarlyWhenTheProjectedReductionFallsShort) {
+  const int n = 400;
+  std::vector<double> values;
+  const SparsePattern pattern = tridiagonal(n, values, 2.0, 0.0);
+  std::vector<double> b(n), x;
+  for (int i = 0; i < n; ++i) b[i] = std::sin(0.37 * i * i);
+  const KrylovResult r = gmres(pattern, values, [](std::vector<double>&) {}, b, x, 1e-12, 60);
+  EXPECT_FALSE(r.converged) << r.iterations << " " << r.relative_residual;
+  EXPECT_LT(r.iterations, 60);
+  EXPECT_GE(r.iterations, 4);
+  // The same matrix with the tolerance reachable at its mean rate runs on.
+  const KrylovResult loose = gmres(pattern, values, [](std::vector<double>&) {}, b, x, 0.5, 60);
+  EXPECT_TRUE(loose.converged);
 }
 
 }  // namespace

@@ -396,7 +396,7 @@ class CaseParser {
   void parse_solver(const YAML::Node& node) {
     reader_.check_keys(node, "solver", {"force_tolerance", "moment_tolerance", "displacement_tolerance", "max_iterations",
                                         "max_cutbacks", "line_search_cuts", "linear_solver", "threads",
-                                        "krylov_iterations", "krylov_tolerance"});
+                                        "krylov_iterations", "krylov_tolerance", "extrapolate"});
     SolverOptions& o = out_.model.options;
     if (node["force_tolerance"]) o.force_tolerance = reader_.positive(node["force_tolerance"], "solver.force_tolerance", "-");
     if (node["moment_tolerance"]) o.moment_tolerance = reader_.positive(node["moment_tolerance"], "solver.moment_tolerance", "-");
@@ -408,6 +408,7 @@ class CaseParser {
     if (node["threads"]) o.threads = reader_.integer(node["threads"], "solver.threads", 0);
     if (node["krylov_iterations"]) o.krylov_iterations = reader_.integer(node["krylov_iterations"], "solver.krylov_iterations", 0);
     if (node["krylov_tolerance"]) o.krylov_tolerance = reader_.positive(node["krylov_tolerance"], "solver.krylov_tolerance", "-");
+    if (node["extrapolate"]) o.extrapolate = reader_.boolean(node["extrapolate"], "solver.extrapolate");
   }
 
   void parse_output(const YAML::Node& node) {
@@ -457,6 +458,7 @@ CaseDefinition load_case(const std::string& path) {
                           {"linear_solver", c.model.options.linear_solver},
                           {"krylov_iterations", c.model.options.krylov_iterations},
                           {"krylov_tolerance", c.model.options.krylov_tolerance},
+                          {"extrapolate", c.model.options.extrapolate},
                           {"threads", c.model.options.threads}};
   const ContactSettings& k = c.model.contact_settings;
   c.resolved["contact"] = {{"enabled", k.enabled}, {"friction", k.friction}, {"orthotropy_ratio", k.orthotropy_ratio},

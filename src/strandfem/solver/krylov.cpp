@@ -5,6 +5,9 @@
 #include <Eigen/Core>
 
 namespace strandfem {
+namespace {
+constexpr int kIterationsBeforeProjection = 4;
+}
 
 void multiply(const SparsePattern& pattern, const std::vector<double>& values, const std::vector<double>& x,
               std::vector<double>& y) {
@@ -59,6 +62,14 @@ KrylovResult gmres(const SparsePattern& pattern, const std::vector<double>& valu
     g[k] = cosines[k] * g[k];
     result.relative_residual = std::abs(g[k + 1]) / beta;
     if (result.relative_residual <= tolerance || !(next_norm > 0.0)) {
+      ++k;
+      break;
+    }
+    // Give up early when the mean reduction per iteration so far cannot reach the tolerance within the
+    // allowed iterations: a preconditioner that far off costs solves and still ends in a refactorization.
+    const int done = k + 1;
+    if (done >= kIterationsBeforeProjection && done < max_iterations &&
+        std::log(result.relative_residual) * max_iterations / done > std::log(tolerance)) {
       ++k;
       break;
     }

@@ -23,6 +23,9 @@ struct SolverOptions {
   // iterations before refactoring (0: factor every Newton iteration); Newton keeps the exact tangent.
   int krylov_iterations = 12;
   double krylov_tolerance = 1e-8;         // relative residual of the linear solve
+  // Predictor: start each increment of a step (after its first) from the converged state plus the last
+  // increment's motion of the free DOFs, scaled to the new size, instead of moving the driven DOFs alone.
+  bool extrapolate = true;
   std::string linear_solver = "mumps";    // mumps | umfpack
   int threads = 0;                        // OpenMP threads for element evaluation; 0 = OpenMP default
   void validate() const;                  // throws std::invalid_argument naming the bad option

@@ -13,6 +13,7 @@ namespace strandfem {
 namespace {
 constexpr int kMaxContactRounds = 40;  // contact set changes per increment before a cut-back
 constexpr int kEasyIncrementsBeforeRegrowth = 3;
+constexpr double kExtrapolatedAcceptance = 1e-3;  // of the tolerance, for a predictor taken without correction
 
 // Adds the wall time of its scope to a total.
 class Timer {
@@ -88,7 +89,23 @@ void StaticAnalysis::update_slaves() {
   for (const RigidTie& tie : model_.ties) state_[tie.slave] = tied_state(tie, state_[tie.master]);
 }
 
-bool StaticAnalysis::solve_increment(double step_fraction,
+void StaticAnalysis::extrapolate_free_motion(double factor) {
+  for (std::size_t node = 0; node < state_.size(); ++node) {
+    if (dofs_.tie_of[node] >= 0) continue;
+    const NodeState &now = committed_state_[node], &before = previous_committed_state_[node];
+    const Vec3 rotation = rotation_vector_from_quaternion(now.rotation * before.rotation.conjugate());
+    Vec3 du = Vec3::Zero(), dtheta = Vec3::Zero();
+    for (int c = 0; c < 6; ++c) {
+      if (dofs_.equation[node][c] < 0) continue;  // driven or supported: the ramp sets it
+      if (c < 3) du[c] = factor * (now.position[c] - before.position[c]);
+      else dtheta[c - 3] = factor * rotation[c - 3];
+    }
+    state_[node].position += du;
+    state_[node].rotation = (quaternion_from_rotation_vector(dtheta) * state_[node].rotation).normalized();
+  }
+}
+
+bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
                                      const std::map<ActionKey, std::pair<double, double>>& ramps,
                                      IncrementReport& report,
                                      const std::function<void(const IncrementReport&)>& on_progress) {
@@ -108,6 +125,7 @@ bool StaticAnalysis::solve_increment(double step_fraction,
     if (key.component < 3) s.position[key.component] += delta;
     else s.rotation = (quaternion_from_rotation_vector(delta * Vec3::Unit(key.component - 3)) * s.rotation).normalized();
   }
+  if (extrapolation > 0) extrapolate_free_motion(extrapolation);
   update_slaves();
   for (Interaction* interaction : model_.interactions()) interaction->begin_increment();
   const int n = dofs_.equation_count;
@@ -188,8 +206,13 @@ bool StaticAnalysis::solve_increment(double step_fraction,
     if (!std::isfinite(current.relative)) return false;
     // Displacement criterion: the last correction is small against the increment's motion (rotations
     // weighted by the mean element length).
-    if (current.forces_ok && (iteration == 0 || last_correction2_ <= opt.displacement_tolerance *
-                                                                         opt.displacement_tolerance * increment_displacement2)) {
+    // An extrapolated predictor is accepted as it stands only when it is in equilibrium far within the
+    // tolerance: otherwise its residual would accumulate from increment to increment, so one correction and
+    // the displacement test must confirm it.
+    const bool displacement_ok =
+        iteration > 0 ? last_correction2_ <= opt.displacement_tolerance * opt.displacement_tolerance * increment_displacement2
+                      : extrapolation == 0 || current.relative <= kExtrapolatedAcceptance * std::min(opt.force_tolerance, opt.moment_tolerance);
+    if (current.forces_ok && displacement_ok) {
       // Converged for the interactions' current states (contact: active set, held friction); they may
       // change them (contacts left in tension open) and Newton goes on.
       if (changes_at_convergence() == 0) return true;
@@ -248,6 +271,7 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
     double largest_size = nominal;  // cap on the increment size after a failure (see below)
     int easy_at_cap = 0;
     int converged_increments = 0, cutbacks = 0;
+    double last_size = 0;  // size of the last converged increment of this step (0: none yet)
     while (fraction < 1.0 - 1e-12) {
       const double target = std::min(1.0, fraction + size);
       IncrementReport report;
@@ -255,7 +279,11 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
       report.step_name = step.name;
       report.increment = converged_increments + 1;
       report.step_fraction = target;
-      if (solve_increment(target, ramps, report, on_progress)) {
+      // Extrapolate within a step only (a new step may reverse the load), and not on the retry of a
+      // failed increment: a poor predictor must not cost the whole cut-back sequence.
+      const double extrapolation =
+          model_.options.extrapolate && last_size > 0 && cutbacks == 0 ? (target - fraction) / last_size : 0.0;
+      if (solve_increment(target, extrapolation, ramps, report, on_progress)) {
         for (BeamElement& e : model_.elements) e.commit();
         bool pattern_changed = false;
         for (Interaction* interaction : model_.interactions()) pattern_changed |= interaction->commit(model_.mesh, state_);
@@ -264,8 +292,10 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
           assembler_ = std::make_unique<Assembler>(model_, dofs_);
           analyze();
         }
+        previous_committed_state_ = committed_state_;
         committed_state_ = state_;
         committed_motion_ = applied_motion_;
+        last_size = target - fraction;
         fraction = target;
         ++converged_increments;
         if (on_increment) on_increment(report);

@@ -62,9 +62,11 @@ class StaticAnalysis {
     int node, component, kind;
     auto operator<=>(const ActionKey&) const = default;
   };
-  bool solve_increment(double step_fraction, const std::map<ActionKey, std::pair<double, double>>& ramps,
+  // extrapolation: multiple of the last converged increment's free motion added to the predictor (0: none).
+  bool solve_increment(double step_fraction, double extrapolation, const std::map<ActionKey, std::pair<double, double>>& ramps,
                        IncrementReport& report, const std::function<void(const IncrementReport&)>& on_progress);
   void update_slaves();
+  void extrapolate_free_motion(double factor);  // adds factor x (committed - previous committed) on free DOFs
   void analyze();                              // symbolic analysis of the current pattern
   bool solve_linear(std::vector<double>& rhs);  // rhs in, Newton correction out; false if the solve failed
 
@@ -73,6 +75,7 @@ class StaticAnalysis {
   std::unique_ptr<Assembler> assembler_;
   std::unique_ptr<LinearSolver> solver_;
   std::vector<NodeState> state_, committed_state_;
+  std::vector<NodeState> previous_committed_state_;  // the converged state before committed_state_
   std::map<ActionKey, double> applied_motion_, committed_motion_;
   std::vector<double> internal_forces_, values_;
   double force_floor_ = 0, length_scale_ = 0;
