@@ -309,6 +309,36 @@ TEST(ContactSet, ParallelWiresCarryTheUniformLineLoad) {
   EXPECT_NEAR(on_master.y(), 0.0, 1e-9);
 }
 
+// Wires held apart by more than the pattern margin keep their element pairs out of the tangent's pattern;
+// a point that closes during Newton widens it at once, and the pairs leave again once the wires are apart.
+TEST(ContactSet, PatternHoldsOnlyPairsThatAreClosedOrNearlySo) {
+  const Mesh mesh = parallel_lines(3, 2, 30, 2.3);  // gap 0.3 mm: within the search margin, beyond 0.01 (r_a + r_b)
+  ContactSettings settings;
+  settings.enabled = true;
+  ContactSet contacts;
+  contacts.initialize(mesh, settings);
+  ASSERT_EQ(contacts.lateral_pair_count(), 2);
+  EXPECT_TRUE(contacts.element_pairs().empty());
+  std::vector<NodeState> state = reference_state(mesh);
+  for (std::size_t n = 0; n < state.size(); ++n)
+    if (mesh.nodes[n].wire == 1) state[n].position.x() -= 0.31;  // pressed 0.01 mm into the master
+  contacts.begin_increment();
+  contacts.evaluate(mesh, state, false);
+  contacts.accept_iterate(mesh);
+  EXPECT_TRUE(contacts.element_pairs_grew());
+  EXPECT_FALSE(contacts.element_pairs_grew());  // reported once
+  EXPECT_GE(contacts.element_pairs().size(), 2u);  // each of the two slave elements with its master candidates
+  // Back at 0.3 mm (beyond twice the margin) the pairs leave at the next commit.
+  EXPECT_TRUE(contacts.commit(mesh, reference_state(mesh)));
+  EXPECT_TRUE(contacts.element_pairs().empty());
+  // Within the margin, a pair enters without touching.
+  std::vector<NodeState> near = reference_state(mesh);
+  for (std::size_t n = 0; n < near.size(); ++n)
+    if (mesh.nodes[n].wire == 1) near[n].position.x() -= 0.29;  // gap 0.01 mm < 0.02 mm
+  EXPECT_TRUE(contacts.commit(mesh, near));
+  EXPECT_FALSE(contacts.element_pairs().empty());
+}
+
 TEST(ContactSet, InitialOverlapIsOffset) {
   const Mesh mesh = parallel_lines(2, 2, 20, 1.9);
   ContactSettings settings;

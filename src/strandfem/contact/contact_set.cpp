@@ -108,6 +108,9 @@ void ContactSet::initialize(const Mesh& mesh, const ContactSettings& settings) {
   settings_ = settings;
   settings_.strand_axis.normalize();
   points_.clear();
+  in_pattern_.clear();
+  element_pairs_.clear();
+  pairs_grew_ = false;
   groups_.clear();
   group_of_.clear();
   wire_pair_kind_.clear();
@@ -186,7 +189,7 @@ void ContactSet::search(const Mesh& mesh, const std::vector<NodeState>& state) {
   searched_positions_.clear();
   for (const NodeState& s : state) searched_positions_.push_back(s.position);
   ++searches_;
-  element_pairs_ = collect_element_pairs(mesh);
+  in_pattern_.resize(points_.size(), 0);  // new points join the pattern at the commit that follows
 }
 
 void ContactSet::set_point_properties(const Mesh& mesh, ContactPoint& p, const Vec3& reference_position) {
@@ -384,19 +387,50 @@ bool ContactSet::commit(const Mesh& mesh, const std::vector<NodeState>& state) {
   for (std::size_t n = 0; n < state.size(); ++n) moved = std::max(moved, (state[n].position - searched_positions_[n]).norm());
   const auto before = element_pairs_;
   if (moved > 0.5 * settings_.search_margin) search(mesh, state);
-  else element_pairs_ = collect_element_pairs(mesh);
   responses_.resize(points_.size());
   evaluate(mesh, state, false);  // the committed state's forces and statuses, for output
+  update_pattern_membership(true);
+  element_pairs_ = collect_element_pairs(mesh);
   return element_pairs_ != before;
+}
+
+void ContactSet::accept_iterate(const Mesh& mesh) {
+  activate_closed();
+  if (update_pattern_membership(false)) {
+    pairs_grew_ = true;
+    element_pairs_ = collect_element_pairs(mesh);
+  }
+}
+
+bool ContactSet::update_pattern_membership(bool may_leave) {
+  bool entered = false;
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    const ContactPoint& p = points_[i];
+    const ContactResponse& r = responses_[i];
+    const double margin = settings_.pattern_margin * (p.radius_a + p.radius_b);
+    const bool near = r.status != ContactStatus::kOpen || r.gap < margin;
+    if (near && !in_pattern_[i]) {
+      in_pattern_[i] = 1;
+      entered = true;
+    } else if (may_leave && in_pattern_[i] && r.gap > 2.0 * margin) {  // apart: no compressive force either way
+      in_pattern_[i] = 0;
+    }
+  }
+  return entered;
 }
 
 std::vector<std::pair<int, int>> ContactSet::collect_element_pairs(const Mesh& mesh) const {
   std::vector<std::pair<int, int>> pairs;
-  for (const LineContactGroup& g : groups_)
-    for (int k : g.candidates) pairs.emplace_back(g.slave_element, mesh.wires[g.wire_b].elements[k]);
-  for (const ContactPoint& p : points_)
-    if (p.kind == ContactKind::kPoint)
-      pairs.emplace_back(mesh.wires[p.wire_a].elements[p.element_a], mesh.wires[p.wire_b].elements[p.element_b]);
+  std::vector<char> group_in_pattern(groups_.size(), 0);
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    const ContactPoint& p = points_[i];
+    if (!in_pattern_[i]) continue;
+    if (p.kind == ContactKind::kLine) group_in_pattern[p.group] = 1;
+    else pairs.emplace_back(mesh.wires[p.wire_a].elements[p.element_a], mesh.wires[p.wire_b].elements[p.element_b]);
+  }
+  for (std::size_t g = 0; g < groups_.size(); ++g)
+    if (group_in_pattern[g])
+      for (int k : groups_[g].candidates) pairs.emplace_back(groups_[g].slave_element, mesh.wires[groups_[g].wire_b].elements[k]);
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   return pairs;

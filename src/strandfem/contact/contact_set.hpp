@@ -44,7 +44,12 @@ class ContactSet final : public Interaction {
   // Newton has converged: releases points in tension and switches held friction states that the trial
   // force contradicts; returns how many changed (0: the increment has converged).
   void begin_increment() override;
-  void accept_iterate() override { activate_closed(); }
+  void accept_iterate(const Mesh& mesh) override;
+  bool element_pairs_grew() override {
+    const bool grew = pairs_grew_;
+    pairs_grew_ = false;
+    return grew;
+  }
   int changes_at_convergence() override { return release_tensile(); }
   void revert() override {}  // working states are rebuilt from the histories by begin_increment
   void activate_closed();
@@ -55,7 +60,8 @@ class ContactSet final : public Interaction {
   // when the set of coupled element pairs changed (the tangent's pattern must be rebuilt).
   bool commit(const Mesh& mesh, const std::vector<NodeState>& state) override;
 
-  // Mesh element pairs that contact may couple (for the sparsity pattern).
+  // Mesh element pairs that contact may couple (the sparsity pattern): those of points closed or nearly so
+  // (ContactSettings::pattern_margin).
   const std::vector<std::pair<int, int>>& element_pairs() const override { return element_pairs_; }
   // Lateral pairs: (slave element, master wire) line-contact groups (the paper's "contact pairs").
   int lateral_pair_count() const { return static_cast<int>(groups_.size()); }
@@ -73,6 +79,9 @@ class ContactSet final : public Interaction {
   double initial_offset(const Mesh& mesh, const ContactPoint& p) const;
   double reference_gap(const Mesh& mesh, const ContactPoint& p) const;
   std::vector<std::pair<int, int>> collect_element_pairs(const Mesh& mesh) const;
+  // Pattern membership from the last evaluation: points closed or within the margin enter; with `may_leave`,
+  // open points beyond twice the margin leave. Returns true when a point entered.
+  bool update_pattern_membership(bool may_leave);
 
   ContactSettings settings_;
   std::vector<ContactPoint> points_;
@@ -81,6 +90,8 @@ class ContactSet final : public Interaction {
   std::map<std::pair<int, int>, int> group_of_;             // (slave mesh element, wire b) -> group
   std::map<std::pair<int, int>, ContactKind> wire_pair_kind_;  // (lower wire, higher wire)
   std::vector<std::pair<int, int>> element_pairs_;
+  std::vector<char> in_pattern_;  // per point: its element pairs are in the pattern (a line point: its group's)
+  bool pairs_grew_ = false;
   std::vector<NodeState> reference_;  // the mesh's stress-free state (overlap offsets are measured there)
   std::vector<Vec3> searched_positions_;
   int searches_ = 0;

@@ -28,6 +28,7 @@ void ContactSettings::validate() const {
   require_positive(elastic_slip, "elastic_slip");
   if (!(normal_smoothing >= 0)) throw std::invalid_argument("contact.normal_smoothing must be >= 0 (mm)");
   require_positive(search_margin, "search_margin");
+  if (!(pattern_margin >= 0 && pattern_margin < 1)) throw std::invalid_argument("contact.pattern_margin must be in [0, 1)");
   if (!(touch_tolerance >= 0 && touch_tolerance < 0.5)) throw std::invalid_argument("contact.touch_tolerance must be in [0, 0.5)");
   if (!(line_contact_angle > 0 && line_contact_angle < 90))
     throw std::invalid_argument("contact.line_contact_angle must be in (0, 90) degrees, got " + std::to_string(line_contact_angle));

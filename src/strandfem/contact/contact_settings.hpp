@@ -52,6 +52,11 @@ struct ContactSettings {
   // Search: element boxes are inflated by the wire radius plus this margin (mm); the search reruns when a
   // node has moved more than half the margin since the last search.
   double search_margin = 0.5;
+  // Tangent pattern: a candidate's element pair enters the pattern once one of its points is closed or open by
+  // less than this fraction of r_a + r_b (leaving again beyond twice that); pairs of candidates held
+  // apart (the lay gaps between wires of one layer) stay out, which divides the factorization's flops by up
+  // to six. A point that closes outside the pattern widens it at once (re-analysis).
+  double pattern_margin = 0.01;
   // Centerlines closer than this angle (degrees) are in line contact, others in point contact.
   double line_contact_angle = 20.0;
   int line_points = 4;  // Gauss points per slave element for line contacts

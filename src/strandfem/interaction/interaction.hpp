@@ -37,7 +37,10 @@ class Interaction {
   // The contributions of the last evaluation (only the active ones).
   virtual void contributions(const Mesh& mesh, std::vector<PairContribution>& out) const = 0;
   // After each accepted Newton iterate (e.g. points that closed become active).
-  virtual void accept_iterate() = 0;
+  virtual void accept_iterate(const Mesh& mesh) = 0;
+  // After accept_iterate: true once when element_pairs() gained pairs (an interaction outside the pattern
+  // became active); the solver rebuilds the pattern before the next tangent.
+  virtual bool element_pairs_grew() = 0;
   // Once Newton has converged for the current state logic: how many states must change (0: accept).
   virtual int changes_at_convergence() = 0;
   // Converged increment at `state`: writes the history; true when element_pairs() changed.

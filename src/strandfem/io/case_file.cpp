@@ -465,7 +465,7 @@ CaseDefinition load_case(const std::string& path) {
                            {"normal_factor", k.normal_factor}, {"tangential_factor", k.tangential_factor},
                            {"normal_multiplier", k.normal_multiplier}, {"tangential_multiplier", k.tangential_multiplier},
                            {"tangential_penalty", k.tangential_penalty == TangentialPenalty::kPaper ? "paper" : "elastic_slip"},
-                           {"elastic_slip", k.elastic_slip}, {"search_margin", k.search_margin}, {"line_contact_angle", k.line_contact_angle},
+                           {"elastic_slip", k.elastic_slip}, {"search_margin", k.search_margin}, {"pattern_margin", k.pattern_margin}, {"line_contact_angle", k.line_contact_angle},
                            {"line_points", k.line_points},
                            {"initial_overlap", k.initial_overlap == InitialOverlap::kOffset ? "offset" : "keep"}, {"touch_tolerance", k.touch_tolerance},
                            {"pairs", k.pair_friction.size()}, {"zones", k.zone_friction.size()}};

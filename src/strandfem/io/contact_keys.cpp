@@ -17,7 +17,7 @@ ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Nod
                                        const std::map<std::string, ElasticMaterial>& materials, bool strand) {
   reader.check_keys(node, "contact", {"enabled", "friction", "friction_pairs", "friction_zones", "orthotropy_ratio",
                                        "normal_factor", "tangential_factor", "normal_multiplier", "tangential_multiplier",
-                                       "search_margin", "line_contact_angle", "line_points", "initial_overlap", "touch_tolerance", "axis",
+                                       "search_margin", "line_contact_angle", "line_points", "initial_overlap", "touch_tolerance", "pattern_margin", "axis",
                                        "tangential_penalty", "elastic_slip", "normal_smoothing"});
   ContactSettings c;
   c.enabled = node["enabled"] ? reader.boolean(node["enabled"], "contact.enabled") : true;
@@ -77,6 +77,10 @@ ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Nod
   if (node["touch_tolerance"]) {
     c.touch_tolerance = reader.non_negative(node["touch_tolerance"], "contact.touch_tolerance", "fraction of r_a + r_b");
     if (c.touch_tolerance >= 0.5) reader.fail(node["touch_tolerance"], "contact.touch_tolerance", "expected a fraction of the radius sum below 0.5");
+  }
+  if (node["pattern_margin"]) {
+    c.pattern_margin = reader.non_negative(node["pattern_margin"], "contact.pattern_margin", "fraction of r_a + r_b");
+    if (c.pattern_margin >= 1) reader.fail(node["pattern_margin"], "contact.pattern_margin", "expected a fraction of the radius sum below 1");
   }
   if (node["initial_overlap"])
     c.initial_overlap = reader.choice(node["initial_overlap"], "contact.initial_overlap", {"offset", "keep"}) == "offset"

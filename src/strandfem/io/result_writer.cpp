@@ -176,6 +176,7 @@ void ResultWriter::finish(const StaticAnalysis& analysis, const AnalysisStatus& 
                                   {"factorizations", l.factorizations},
                                   {"krylov_solves", a.krylov_solves},
                                   {"krylov_iterations", a.krylov_iterations},
+                                  {"pattern_rebuilds", a.pattern_rebuilds},
                                   {"assembly_seconds", a.assembly_seconds},
                                   {"linear_seconds", a.linear_seconds},
                                   {"factorization_seconds", l.factorization_seconds},

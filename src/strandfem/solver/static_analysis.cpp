@@ -85,6 +85,12 @@ bool StaticAnalysis::solve_linear(std::vector<double>& rhs) {
   return true;
 }
 
+void StaticAnalysis::rebuild_pattern() {
+  assembler_ = std::make_unique<Assembler>(model_, dofs_);
+  analyze();
+  ++statistics_.pattern_rebuilds;
+}
+
 void StaticAnalysis::update_slaves() {
   for (const RigidTie& tie : model_.ties) state_[tie.slave] = tied_state(tie, state_[tie.master]);
 }
@@ -186,7 +192,13 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
     return norm2;
   };
   auto accept_iterate = [&] {
-    for (Interaction* interaction : model_.interactions()) interaction->accept_iterate();
+    bool pattern_grew = false;
+    for (Interaction* interaction : model_.interactions()) {
+      interaction->accept_iterate(model_.mesh);
+      pattern_grew |= interaction->element_pairs_grew();
+    }
+    // A contact closed outside the tangent's pattern: widen it now, so that the next tangent is complete.
+    if (pattern_grew) rebuild_pattern();
   };
   auto changes_at_convergence = [&] {
     int changes = 0;
@@ -287,11 +299,7 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
         for (BeamElement& e : model_.elements) e.commit();
         bool pattern_changed = false;
         for (Interaction* interaction : model_.interactions()) pattern_changed |= interaction->commit(model_.mesh, state_);
-        if (pattern_changed) {
-          // New element pairs: the tangent's pattern grows and is analyzed again.
-          assembler_ = std::make_unique<Assembler>(model_, dofs_);
-          analyze();
-        }
+        if (pattern_changed) rebuild_pattern();  // element pairs entered or left the pattern
         previous_committed_state_ = committed_state_;
         committed_state_ = state_;
         committed_motion_ = applied_motion_;

@@ -28,6 +28,7 @@ struct AnalysisStatistics {
   int newton_iterations = 0;   // tangent assemblies
   int krylov_solves = 0;       // linear solves done by GMRES with an older factorization
   int krylov_iterations = 0;
+  int pattern_rebuilds = 0;    // tangent patterns rebuilt and analyzed again (interaction pairs changed)
   double assembly_seconds = 0; // tangent assembly (elements and interactions) for Newton corrections
   double linear_seconds = 0;   // factorizations, solves and GMRES
 };
@@ -68,6 +69,7 @@ class StaticAnalysis {
   void update_slaves();
   void extrapolate_free_motion(double factor);  // adds factor x (committed - previous committed) on free DOFs
   void analyze();                              // symbolic analysis of the current pattern
+  void rebuild_pattern();                      // the interactions' element pairs changed: new pattern, analysis
   bool solve_linear(std::vector<double>& rhs);  // rhs in, Newton correction out; false if the solve failed
 
   Model& model_;
