@@ -12,7 +12,7 @@ namespace {
 class BeamElementTest : public ::testing::Test {
  protected:
   BeamElementTest()
-      : section_(SectionGeometry::circle(3.0, 0.3), ElasticMaterial{200000, 0.3, 7.85e-9}),
+      : section_(SectionGeometry::circle(3.0, 0.3), Material{200000, 0.3, 7.85e-9}),
         reference_(testing::helical_reference()),
         element_({0, 1, 2}, &section_, reference_) {}
   ElasticSection section_;

@@ -266,7 +266,7 @@ TEST(ContactForceLaw, SlipForceLiesOnTheFrictionEllipse) {
 // Two straight parallel steel wires (d = 2 mm) along z: "master" on the axis, "slave" at x = offset.
 Mesh parallel_lines(int master_elements, int slave_elements, double length, double offset) {
   Mesh mesh;
-  mesh.sections.push_back(std::make_unique<ElasticSection>(SectionGeometry::circle(2.0, 0.3), ElasticMaterial{200000, 0.3, 0, "steel"}));
+  mesh.sections.push_back(std::make_unique<ElasticSection>(SectionGeometry::circle(2.0, 0.3), Material{200000, 0.3, 0, "steel"}));
   auto line = [length](double x) {
     return [x, length](double t) { return std::make_pair(Vec3(x, 0, t * length), Mat3::Identity()); };
   };

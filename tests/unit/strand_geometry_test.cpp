@@ -14,7 +14,7 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
-StrandSpec make(const std::vector<std::array<double, 3>>& layers, std::map<std::string, ElasticMaterial> materials,
+StrandSpec make(const std::vector<std::array<double, 3>>& layers, std::map<std::string, Material> materials,
                 const std::vector<std::string>& names) {
   StrandSpec s;
   s.length = 1000;

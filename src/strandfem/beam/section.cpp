@@ -1,6 +1,9 @@
 #include "strandfem/beam/section.hpp"
 
+#include "strandfem/beam/fibre_section.hpp"
+
 #include <cmath>
+#include <algorithm>
 #include <numbers>
 
 namespace strandfem {
@@ -17,7 +20,7 @@ SectionGeometry SectionGeometry::circle(double diameter, double poisson_ratio) {
   return g;
 }
 
-ElasticSection::ElasticSection(const SectionGeometry& geometry, const ElasticMaterial& material)
+ElasticSection::ElasticSection(const SectionGeometry& geometry, const Material& material)
     : geometry_(geometry), material_(material) {
   const double E = material.youngs_modulus, G = material.shear_modulus();
   stiffness_ << E * geometry.area, G * geometry.shear_factor * geometry.area,
@@ -30,6 +33,22 @@ SectionResponse ElasticSection::evaluate(const Vec6& strain, const SectionHistor
   r.tangent = stiffness_.asDiagonal();
   r.resultants = stiffness_.cwiseProduct(strain);
   return r;
+}
+
+SectionPointSummary ElasticSection::summary(const Vec6& strain, const SectionHistory&) const {
+  const double radius = geometry_.contact_radius > 0 ? geometry_.contact_radius : std::sqrt(geometry_.area / std::numbers::pi);
+  const double E = material_.youngs_modulus, G = material_.shear_modulus();
+  SectionPointSummary s;
+  for (const Fibre& f : disc_fibres(radius)) {
+    const Vec3 e = fibre_strain_operator(f, geometry_.shear_factor) * strain;
+    s.max_von_mises = std::max(s.max_von_mises, von_mises(Vec3(E * e[0], G * e[1], G * e[2])));
+  }
+  return s;
+}
+
+std::unique_ptr<Section> make_section(const SectionGeometry& geometry, const Material& material) {
+  if (material.plasticity) return std::make_unique<FibreSection>(geometry, material);
+  return std::make_unique<ElasticSection>(geometry, material);
 }
 
 }  // namespace strandfem

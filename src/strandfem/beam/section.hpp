@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "strandfem/beam/material.hpp"
 #include "strandfem/core/types.hpp"
 
 namespace strandfem {
@@ -16,18 +17,16 @@ struct SectionResponse {
   Mat6 tangent = Mat6::Zero();
 };
 
+// What a section point reports for output: the largest von Mises stress over its fibres (MPa) and the largest
+// equivalent plastic strain (0 for elastic sections).
+struct SectionPointSummary {
+  double max_von_mises = 0;
+  double max_plastic_strain = 0;
+};
+
 // History variables of one section point (plastic strains, back stresses...). Empty for elastic sections.
 // Owned by the element's integration point; committed only when an increment converges.
 using SectionHistory = std::vector<double>;
-
-// Elastic properties of a homogeneous isotropic material.
-struct ElasticMaterial {
-  double youngs_modulus = 0;  // MPa
-  double poisson_ratio = 0;
-  double density = 0;         // t/mm^3 (1 t/mm^3 = 1e12 kg/m^3), used only for mass per length
-  std::string name;           // the case file's material key (friction is given per material pair)
-  double shear_modulus() const { return youngs_modulus / (2.0 * (1.0 + poisson_ratio)); }
-};
 
 // Geometric properties of a cross-section.
 struct SectionGeometry {
@@ -49,8 +48,10 @@ class Section {
   virtual SectionResponse evaluate(const Vec6& strain, const SectionHistory& committed,
                                    SectionHistory& trial) const = 0;
   virtual SectionHistory initial_history() const { return {}; }
+  // Output values at the given strains and (converged) history.
+  virtual SectionPointSummary summary(const Vec6& strain, const SectionHistory& history) const = 0;
   virtual const SectionGeometry& geometry() const = 0;
-  virtual const ElasticMaterial& material() const = 0;
+  virtual const Material& material() const = 0;
   // Elastic stiffness diagonal [EA, kGA, kGA, GJ, EI2, EI3].
   virtual Vec6 elastic_stiffness() const = 0;
 };
@@ -58,17 +59,23 @@ class Section {
 // Linear elastic section: resultants = diag(EA, kGA2, kGA3, GJ, EI2, EI3) * strain.
 class ElasticSection final : public Section {
  public:
-  ElasticSection(const SectionGeometry& geometry, const ElasticMaterial& material);
+  ElasticSection(const SectionGeometry& geometry, const Material& material);
   SectionResponse evaluate(const Vec6& strain, const SectionHistory& committed,
                            SectionHistory& trial) const override;
+  // Von Mises stress sampled on the fibres of a disc of the section's area.
+  SectionPointSummary summary(const Vec6& strain, const SectionHistory& history) const override;
   const SectionGeometry& geometry() const override { return geometry_; }
-  const ElasticMaterial& material() const override { return material_; }
+  const Material& material() const override { return material_; }
   Vec6 elastic_stiffness() const override { return stiffness_; }
 
  private:
   SectionGeometry geometry_;
-  ElasticMaterial material_;
+  Material material_;
   Vec6 stiffness_;
 };
+
+// The section of a wire of this material: FibreSection when the material has plasticity (circular
+// geometry required; throws std::invalid_argument otherwise), ElasticSection when not.
+std::unique_ptr<Section> make_section(const SectionGeometry& geometry, const Material& material);
 
 }  // namespace strandfem

@@ -24,7 +24,7 @@ struct LayerSpec {
 struct StrandSpec {
   double length = 0;  // mm
   std::vector<LayerSpec> layers;
-  std::map<std::string, ElasticMaterial> materials;
+  std::map<std::string, Material> materials;
 };
 
 // Lay directions alternating from a right-hand outer layer inward (the usual conductor practice).

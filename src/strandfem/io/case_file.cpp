@@ -53,19 +53,30 @@ class CaseParser {
     if (!node.IsMap() || node.size() == 0) reader_.fail(node, "materials", "expected a mapping name -> {E, nu, density}");
     for (const auto& entry : node) {
       const std::string name = entry.first.as<std::string>(), path = "materials." + name;
-      reader_.check_keys(entry.second, path, {"E", "nu", "density"});
-      ElasticMaterial m;
+      reader_.check_keys(entry.second, path, {"E", "nu", "density", "plasticity"});
+      Material m;
       m.name = name;
       m.youngs_modulus = reader_.positive(reader_.require(entry.second, path, "E"), path + ".E", "MPa");
       m.poisson_ratio = reader_.number(reader_.require(entry.second, path, "nu"), path + ".nu");
       if (!(m.poisson_ratio > -1.0 && m.poisson_ratio < 0.5))
         reader_.fail(entry.second["nu"], path + ".nu", "expected a Poisson ratio in (-1, 0.5)");
       if (entry.second["density"]) m.density = reader_.non_negative(entry.second["density"], path + ".density", "t/mm^3");
+      if (const YAML::Node p = entry.second["plasticity"]) {
+        const std::string pp = path + ".plasticity";
+        if (!p.IsMap()) reader_.fail(p, pp, "expected {yield_stress, tangent_modulus} in MPa");
+        reader_.check_keys(p, pp, {"yield_stress", "tangent_modulus"});
+        BilinearHardening law;
+        law.yield_stress = reader_.positive(reader_.require(p, pp, "yield_stress"), pp + ".yield_stress", "MPa");
+        law.tangent_modulus = reader_.non_negative(reader_.require(p, pp, "tangent_modulus"), pp + ".tangent_modulus", "MPa");
+        if (law.tangent_modulus >= m.youngs_modulus)
+          reader_.fail(p["tangent_modulus"], pp + ".tangent_modulus", "expected a hardening modulus below E (" + std::to_string(m.youngs_modulus) + " MPa)");
+        m.plasticity = law;
+      }
       materials_[name] = m;
     }
   }
 
-  const ElasticMaterial& material(const YAML::Node& node, const std::string& path) {
+  const Material& material(const YAML::Node& node, const std::string& path) {
     const std::string name = reader_.text(node, path);
     const auto it = materials_.find(name);
     if (it == materials_.end()) reader_.fail(node, path, "unknown material '" + name + "' (define it under 'materials')");
@@ -158,7 +169,7 @@ class CaseParser {
       line.name = reader_.text(reader_.require(b, path, "name"), path + ".name");
       for (const MeshWire& w : out_.model.mesh.wires)
         if (w.name == line.name) reader_.fail(b["name"], path + ".name", "duplicate beam name '" + line.name + "'");
-      const ElasticMaterial& mat = material(reader_.require(b, path, "material"), path + ".material");
+      const Material& mat = material(reader_.require(b, path, "material"), path + ".material");
       const YAML::Node s = reader_.require(b, path, "section");
       reader_.check_keys(s, path + ".section", {"diameter", "area", "inertia_2", "inertia_3", "torsion_constant", "shear_factor"});
       SectionGeometry geometry;
@@ -176,7 +187,9 @@ class CaseParser {
       line.elements = reader_.integer(reader_.require(b, path, "elements"), path + ".elements", 1);
       parse_shape(reader_.require(b, path, "shape"), path + ".shape", line);
       Mesh& m = out_.model.mesh;
-      m.sections.push_back(std::make_unique<ElasticSection>(geometry, mat));
+      if (mat.plasticity && !s["diameter"])
+        reader_.fail(s, path + ".section", "material '" + mat.name + "' has plasticity: give the wire 'diameter' (fibre section)");
+      m.sections.push_back(make_section(geometry, mat));
       add_beam_line(m, line, static_cast<int>(m.sections.size()) - 1);
     }
     const MeshWire& first = out_.model.mesh.wires[0];
@@ -425,7 +438,7 @@ class CaseParser {
 
   YamlReader reader_;
   CaseDefinition& out_;
-  std::map<std::string, ElasticMaterial> materials_;
+  std::map<std::string, Material> materials_;
   std::map<std::string, int> hubs_;
 };
 

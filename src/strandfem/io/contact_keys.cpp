@@ -6,7 +6,7 @@ namespace {
 std::string at(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
 
 std::string material_name(const YamlReader& reader, const YAML::Node& node, const std::string& path,
-                          const std::map<std::string, ElasticMaterial>& materials) {
+                          const std::map<std::string, Material>& materials) {
   const std::string name = reader.text(node, path);
   if (!materials.count(name)) reader.fail(node, path, "unknown material '" + name + "' (define it under 'materials')");
   return name;
@@ -14,7 +14,7 @@ std::string material_name(const YamlReader& reader, const YAML::Node& node, cons
 }  // namespace
 
 ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Node& node,
-                                       const std::map<std::string, ElasticMaterial>& materials, bool strand) {
+                                       const std::map<std::string, Material>& materials, bool strand) {
   reader.check_keys(node, "contact", {"enabled", "friction", "friction_pairs", "friction_zones", "orthotropy_ratio",
                                        "normal_factor", "tangential_factor", "normal_multiplier", "tangential_multiplier",
                                        "search_margin", "line_contact_angle", "line_points", "initial_overlap", "touch_tolerance", "pattern_margin", "axis",

@@ -12,6 +12,6 @@ namespace strandfem {
 // Reads and validates `contact:` (docs/case-files.md); `strand`: the case is a strand (no `axis` key).
 // Throws CaseError naming the key.
 ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Node& node,
-                                       const std::map<std::string, ElasticMaterial>& materials, bool strand);
+                                       const std::map<std::string, Material>& materials, bool strand);
 
 }  // namespace strandfem

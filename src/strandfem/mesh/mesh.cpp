@@ -15,9 +15,8 @@ Mesh mesh_strand(const StrandSpec& strand, const MeshSpec& spec) {
   Mesh mesh;
   for (std::size_t i = 0; i < strand.layers.size(); ++i) {
     const LayerSpec& layer = strand.layers[i];
-    const ElasticMaterial& material = strand.materials.at(layer.material);
-    mesh.sections.push_back(std::make_unique<ElasticSection>(
-        SectionGeometry::circle(layer.wire_diameter, material.poisson_ratio), material));
+    const Material& material = strand.materials.at(layer.material);
+    mesh.sections.push_back(make_section(SectionGeometry::circle(layer.wire_diameter, material.poisson_ratio), material));
     const int section = static_cast<int>(mesh.sections.size()) - 1;
     const double arc_length = strand.length / std::cos(layer.lay_angle);
     const int count = element_count_for(arc_length, spec);

@@ -7,7 +7,7 @@
 
 namespace strandfem {
 namespace {
-const ElasticMaterial& material_of(const StrandSpec& strand, const LayerSpec& layer) {
+const Material& material_of(const StrandSpec& strand, const LayerSpec& layer) {
   return strand.materials.at(layer.material);
 }
 }  // namespace
@@ -32,7 +32,7 @@ LinearStrandStiffness linear_strand_stiffness(const StrandSpec& strand) {
   const int reference_direction = strand.layers.back().lay_direction;
   for (std::size_t i = 0; i < strand.layers.size(); ++i) {
     const LayerSpec& layer = strand.layers[i];
-    const ElasticMaterial& m = material_of(strand, layer);
+    const Material& m = material_of(strand, layer);
     const double r = 0.5 * layer.wire_diameter;
     const double EA = m.youngs_modulus * std::numbers::pi * r * r;
     const double EI = m.youngs_modulus * std::numbers::pi * std::pow(r, 4) / 4.0;
@@ -61,7 +61,7 @@ LinearStrandStiffness linear_strand_stiffness(const StrandSpec& strand) {
 StrandProperties strand_properties(const StrandSpec& strand) {
   StrandProperties p;
   for (const LayerSpec& layer : strand.layers) {
-    const ElasticMaterial& m = material_of(strand, layer);
+    const Material& m = material_of(strand, layer);
     const double area = std::numbers::pi * 0.25 * layer.wire_diameter * layer.wire_diameter;
     p.metallic_area += layer.wires * area;
     // density in t/mm^3 times mm^2 gives t/mm = 1e6 kg/m.

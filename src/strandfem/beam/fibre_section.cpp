@@ -1,0 +1,114 @@
+#include "strandfem/beam/fibre_section.hpp"
+
+#include "strandfem/core/quadrature.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+namespace strandfem {
+namespace {
+
+constexpr int kStateSize = 7;  // plastic strains (3), back stress (3), equivalent plastic strain
+
+FibrePlasticState load_state(const SectionHistory& h, std::size_t fibre) {
+  const double* v = h.data() + kStateSize * fibre;
+  FibrePlasticState s;
+  s.plastic_strain = Vec3(v[0], v[1], v[2]);
+  s.back_stress = Vec3(v[3], v[4], v[5]);
+  s.equivalent_plastic_strain = v[6];
+  return s;
+}
+
+void store_state(const FibrePlasticState& s, SectionHistory& h, std::size_t fibre) {
+  double* v = h.data() + kStateSize * fibre;
+  for (int i = 0; i < 3; ++i) {
+    v[i] = s.plastic_strain[i];
+    v[3 + i] = s.back_stress[i];
+  }
+  v[6] = s.equivalent_plastic_strain;
+}
+
+}  // namespace
+
+std::vector<Fibre> disc_fibres(double radius, int rings, int sectors) {
+  if (!(radius > 0) || rings < 1 || sectors < 3) throw std::invalid_argument("disc_fibres: bad radius or counts");
+  std::vector<double> nodes, weights;
+  gauss_legendre(rings, nodes, weights);
+  std::vector<Fibre> fibres;
+  const double sector_angle = 2.0 * std::numbers::pi / sectors;
+  for (int i = 0; i < rings; ++i) {
+    // Integral over r in [0, R] of f(r) r dr.
+    const double r = 0.5 * radius * (nodes[i] + 1.0);
+    const double ring_weight = 0.5 * radius * weights[i] * r;
+    for (int j = 0; j < sectors; ++j) {
+      const double angle = (j + 0.5) * sector_angle;
+      fibres.push_back({r * std::cos(angle), r * std::sin(angle), ring_weight * sector_angle});
+    }
+  }
+  return fibres;
+}
+
+Eigen::Matrix<double, 3, 6> fibre_strain_operator(const Fibre& f, double shear_factor) {
+  const double s = std::sqrt(shear_factor);
+  Eigen::Matrix<double, 3, 6> B = Eigen::Matrix<double, 3, 6>::Zero();
+  B(0, 0) = 1.0;
+  B(0, 4) = f.z;
+  B(0, 5) = -f.y;
+  B(1, 1) = s;
+  B(1, 3) = -f.z;
+  B(2, 2) = s;
+  B(2, 3) = f.y;
+  return B;
+}
+
+FibreSection::FibreSection(const SectionGeometry& geometry, const Material& material)
+    : geometry_(geometry), material_(material) {
+  if (!material.plasticity)
+    throw std::invalid_argument("material '" + material.name + "': a fibre section needs plasticity");
+  if (!(geometry.contact_radius > 0))
+    throw std::invalid_argument("material '" + material.name + "': plastic wires need a circular section (diameter)");
+  const BilinearHardening& law = *material.plasticity;
+  if (!(law.yield_stress > 0))
+    throw std::invalid_argument("materials." + material.name + ".plasticity.yield_stress must be > 0");
+  if (!(law.tangent_modulus >= 0 && law.tangent_modulus < material.youngs_modulus))
+    throw std::invalid_argument("materials." + material.name + ".plasticity.tangent_modulus must be in [0, E)");
+  const double E = material.youngs_modulus, G = material.shear_modulus();
+  stiffness_ << E * geometry.area, G * geometry.shear_factor * geometry.area, G * geometry.shear_factor * geometry.area,
+      G * geometry.torsion_constant, E * geometry.inertia_2, E * geometry.inertia_3;
+  fibres_ = disc_fibres(geometry.contact_radius);
+  for (const Fibre& f : fibres_) operators_.push_back(fibre_strain_operator(f, geometry.shear_factor));
+}
+
+SectionHistory FibreSection::initial_history() const { return SectionHistory(kStateSize * fibres_.size(), 0.0); }
+
+SectionResponse FibreSection::evaluate(const Vec6& strain, const SectionHistory& committed, SectionHistory& trial) const {
+  SectionResponse r;
+  trial.resize(committed.size());
+  for (std::size_t i = 0; i < fibres_.size(); ++i) {
+    const Eigen::Matrix<double, 3, 6>& B = operators_[i];
+    FibrePlasticState next;
+    const FibreResponse f = j2_fibre_return(B * strain, material_, load_state(committed, i), next);
+    store_state(next, trial, i);
+    const double area = fibres_[i].area;
+    r.resultants += area * B.transpose() * f.stress;
+    r.tangent += area * B.transpose() * f.tangent * B;
+  }
+  return r;
+}
+
+SectionPointSummary FibreSection::summary(const Vec6& strain, const SectionHistory& history) const {
+  SectionPointSummary s;
+  for (std::size_t i = 0; i < fibres_.size(); ++i) {
+    FibrePlasticState next;
+    const FibrePlasticState state = load_state(history, i);
+    // At a converged state the return from the converged history is the identity on the plastic state.
+    const FibreResponse f = j2_fibre_return(operators_[i] * strain, material_, state, next);
+    s.max_von_mises = std::max(s.max_von_mises, von_mises(f.stress));
+    s.max_plastic_strain = std::max(s.max_plastic_strain, next.equivalent_plastic_strain);
+  }
+  return s;
+}
+
+}  // namespace strandfem
