@@ -105,8 +105,11 @@ SectionPointSummary FibreSection::summary(const Vec6& strain, const SectionHisto
     const FibrePlasticState state = load_state(history, i);
     // At a converged state the return from the converged history is the identity on the plastic state.
     const FibreResponse f = j2_fibre_return(operators_[i] * strain, material_, state, next);
-    s.max_von_mises = std::max(s.max_von_mises, von_mises(f.stress));
-    s.max_plastic_strain = std::max(s.max_plastic_strain, next.equivalent_plastic_strain);
+    const double stress = von_mises(f.stress), plastic = next.equivalent_plastic_strain;
+    s.max_von_mises = std::max(s.max_von_mises, stress);
+    s.max_plastic_strain = std::max(s.max_plastic_strain, plastic);
+    s.mean_von_mises += stress / fibres_.size();
+    s.mean_plastic_strain += plastic / fibres_.size();
   }
   return s;
 }

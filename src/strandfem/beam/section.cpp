@@ -39,9 +39,12 @@ SectionPointSummary ElasticSection::summary(const Vec6& strain, const SectionHis
   const double radius = geometry_.contact_radius > 0 ? geometry_.contact_radius : std::sqrt(geometry_.area / std::numbers::pi);
   const double E = material_.youngs_modulus, G = material_.shear_modulus();
   SectionPointSummary s;
-  for (const Fibre& f : disc_fibres(radius)) {
+  const std::vector<Fibre> fibres = disc_fibres(radius);
+  for (const Fibre& f : fibres) {
     const Vec3 e = fibre_strain_operator(f, geometry_.shear_factor) * strain;
-    s.max_von_mises = std::max(s.max_von_mises, von_mises(Vec3(E * e[0], G * e[1], G * e[2])));
+    const double stress = von_mises(Vec3(E * e[0], G * e[1], G * e[2]));
+    s.max_von_mises = std::max(s.max_von_mises, stress);
+    s.mean_von_mises += stress / fibres.size();
   }
   return s;
 }

@@ -17,11 +17,11 @@ struct SectionResponse {
   Mat6 tangent = Mat6::Zero();
 };
 
-// What a section point reports for output: the largest von Mises stress over its fibres (MPa) and the largest
-// equivalent plastic strain (0 for elastic sections).
+// What a section point reports for output: von Mises stress (MPa) and equivalent plastic strain over its
+// fibres, largest and mean (plastic strains are 0 for elastic sections).
 struct SectionPointSummary {
-  double max_von_mises = 0;
-  double max_plastic_strain = 0;
+  double max_von_mises = 0, mean_von_mises = 0;
+  double max_plastic_strain = 0, mean_plastic_strain = 0;
 };
 
 // History variables of one section point (plastic strains, back stresses...). Empty for elastic sections.

@@ -425,7 +425,8 @@ class CaseParser {
   }
 
   void parse_output(const YAML::Node& node) {
-    reader_.check_keys(node, "output", {"every", "vtu", "monitor", "contacts", "contacts_every"});
+    reader_.check_keys(node, "output", {"every", "vtu", "monitor", "contacts", "contacts_every", "wires"});
+    if (node["wires"]) out_.output.wires = reader_.boolean(node["wires"], "output.wires");
     if (node["contacts"]) out_.output.contacts = reader_.boolean(node["contacts"], "output.contacts");
     if (node["contacts_every"]) {
       out_.output.contacts_every = reader_.integer(node["contacts_every"], "output.contacts_every", 1);

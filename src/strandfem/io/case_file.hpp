@@ -17,6 +17,7 @@ struct OutputOptions {
   bool contacts = true;          // DIR/contacts.csv and contact point files, when contact is on
   int contacts_every = 1;        // contact rows every n-th converged increment (the last of each step always)
   bool contacts_every_set = false;
+  bool wires = true;             // DIR/wires.csv: section results along every wire, at the contact rows' increments
 };
 
 // A parsed, validated case: the model plus what the outputs need to know about it.

@@ -33,7 +33,7 @@ void ContactWriter::on_increment(const StaticAnalysis& analysis, const Increment
     if (r.status == ContactStatus::kOpen) continue;
     const Vec3& x = r.position;
     csv_ << fmt::format("{},{},{:.8g},{},{},{},{},{},{},{},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.4f},{:.6e},{:.6e},{:.6e},{:.6e},{},{},{:.6e},{:.6e}\n",
-                        report.step, report.increment, load_factor, to_string(p.kind), p.wire_a, p.wire_b,
+                        report.step + 1, report.increment, load_factor, to_string(p.kind), p.wire_a, p.wire_b,
                         model.mesh.wires[p.wire_a].layer, model.mesh.wires[p.wire_b].layer, p.element_a, r.element_b, r.xi,
                         r.eta, x.x(), x.y(), x.z(), std::atan2(x.y(), x.x()) * 180.0 / M_PI, r.gap, r.normal_force, r.q1,
                         r.q2, p.kind == ContactKind::kLine ? "N/mm" : "N", to_string(r.status), p.history.slip,

@@ -2,7 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
+
+#include "strandfem/post/wire_results.hpp"
 
 namespace strandfem {
 namespace {
@@ -68,7 +71,7 @@ void prepare(const std::filesystem::path& directory) {
 }  // namespace
 
 ResultWriter::ResultWriter(std::filesystem::path directory, const CaseDefinition& c)
-    : directory_(std::move(directory)), case_(c), contacts_((prepare(directory_), directory_), c) {
+    : directory_(std::move(directory)), case_(c), contacts_((prepare(directory_), directory_), c), wires_(directory_, c) {
   history_.open(directory_ / "history.csv");
   if (!history_) throw std::runtime_error("cannot write " + (directory_ / "history.csv").string());
   history_ << "step,increment,load_factor,axial_strain,axial_force_N,torque_Nmm,end_rotation_rad,transverse_load_N,"
@@ -86,6 +89,7 @@ void ResultWriter::on_increment(const StaticAnalysis& analysis, const IncrementR
   history_.flush();
   ++increments_seen_;
   contacts_.on_increment(analysis, report, increments_seen_, r.load_factor);
+  wires_.on_increment(analysis, report, increments_seen_, r.load_factor);
   last_written_ = false;
   if (case_.output.vtu && increments_seen_ % case_.output.every == 0) {
     write_vtu(analysis, r.load_factor);
@@ -130,7 +134,20 @@ void ResultWriter::write_vtu(const StaticAnalysis& analysis, double time) {
   out << "<DataArray type=\"Float64\" Name=\"axial_strain\" format=\"ascii\">\n";
   for (const BeamElement& e : model.elements)
     out << fmt::format("{:.9g}\n{:.9g}\n", e.points()[0].strain[0], e.points()[1].strain[0]);
-  out << "</DataArray>\n</CellData>\n<Cells>\n<DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">\n";
+  out << "</DataArray>\n";
+  // Section-point fields reduced per element (both cells of an element carry its values).
+  const std::vector<ElementResult> reduced = element_results(model);
+  const std::array<std::pair<const char*, double ElementResult::*>, 4> fields = {{
+      {"von_mises_max_MPa", &ElementResult::max_von_mises},
+      {"von_mises_mean_MPa", &ElementResult::mean_von_mises},
+      {"plastic_strain_max", &ElementResult::max_plastic_strain},
+      {"plastic_strain_mean", &ElementResult::mean_plastic_strain}}};
+  for (const auto& [field_name, member] : fields) {
+    out << "<DataArray type=\"Float64\" Name=\"" << field_name << "\" format=\"ascii\">\n";
+    for (const ElementResult& r : reduced) out << fmt::format("{:.7g}\n{:.7g}\n", r.*member, r.*member);
+    out << "</DataArray>\n";
+  }
+  out << "</CellData>\n<Cells>\n<DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">\n";
   for (const MeshElement& e : mesh.elements) out << e.nodes[0] << " " << e.nodes[1] << "\n" << e.nodes[1] << " " << e.nodes[2] << "\n";
   out << "</DataArray>\n<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">\n";
   for (std::size_t i = 1; i <= cells; ++i) out << 2 * i << "\n";

@@ -1,4 +1,5 @@
-// Writes a run's results folder: history.csv, displacements.csv, summary.json, result.pvd + .vtu files.
+// Writes a run's results folder: history.csv, displacements.csv, summary.json, result.pvd + .vtu files (and
+// through its helpers contacts.csv and wires.csv).
 #pragma once
 #include <filesystem>
 #include <fstream>
@@ -8,6 +9,7 @@
 
 #include "strandfem/io/case_file.hpp"
 #include "strandfem/io/contact_writer.hpp"
+#include "strandfem/io/wire_writer.hpp"
 #include "strandfem/solver/static_analysis.hpp"
 
 namespace strandfem {
@@ -44,6 +46,7 @@ class ResultWriter {
   const CaseDefinition& case_;
   std::ofstream history_;
   ContactWriter contacts_;
+  WireWriter wires_;
   std::vector<HistoryRow> rows_;
   std::vector<std::pair<double, std::string>> frames_;
   int increments_seen_ = 0;

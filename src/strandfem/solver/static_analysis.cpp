@@ -285,7 +285,10 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
     int converged_increments = 0, cutbacks = 0;
     double last_size = 0;  // size of the last converged increment of this step (0: none yet)
     while (fraction < 1.0 - 1e-12) {
-      const double target = std::min(1.0, fraction + size);
+      // Never past the next point of the nominal grid (k / increments): after cut-backs the increments land on
+      // the load levels the case asked for again.
+      const double next_nominal = nominal * (std::floor(fraction / nominal + 1e-9) + 1.0);
+      const double target = std::min({1.0, fraction + size, next_nominal});
       IncrementReport report;
       report.step = static_cast<int>(s);
       report.step_name = step.name;

@@ -1,0 +1,22 @@
+// Section results along the wires: DIR/wires.csv, one row per wire node per selected increment.
+#pragma once
+#include <filesystem>
+#include <fstream>
+
+#include "strandfem/io/case_file.hpp"
+#include "strandfem/solver/static_analysis.hpp"
+
+namespace strandfem {
+
+class WireWriter {
+ public:
+  WireWriter(const std::filesystem::path& directory, const CaseDefinition& c);
+  // Rows for this converged increment when selected (every output.contacts_every-th, and the last of each step).
+  void on_increment(const StaticAnalysis& analysis, const IncrementReport& report, int increment_count, double load_factor);
+
+ private:
+  const CaseDefinition& case_;
+  std::ofstream csv_;
+};
+
+}  // namespace strandfem
