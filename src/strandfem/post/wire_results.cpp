@@ -53,6 +53,7 @@ std::vector<WireNodeResult> wire_node_results(const Model& model) {
       r.wire = static_cast<int>(w);
       r.layer = mesh.wires[w].layer;
       r.z = x.z();
+      r.radius = std::hypot(x.x(), x.y());
       r.angle_degrees = std::hypot(x.x(), x.y()) > 1e-9 ? std::atan2(x.y(), x.x()) * 180.0 / std::numbers::pi : 0.0;
       if (a.count > 0) r.resultants = a.sum / a.count;
       r.max_von_mises = a.max_von_mises;

@@ -21,6 +21,7 @@ struct WireNodeResult {
   int node = -1, wire = -1, layer = -1;
   double z = 0;              // reference axial position, mm
   double angle_degrees = 0;  // reference angular position about the strand axis (z)
+  double radius = 0;         // reference distance from the strand axis, mm
   Vec6 resultants = Vec6::Zero();
   double max_von_mises = 0, max_plastic_strain = 0;
 };
