@@ -269,6 +269,8 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
 AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementReport&)>& on_increment,
                                    const std::function<void(const IncrementReport&)>& on_progress) {
   std::map<ActionKey, double> totals;  // totals at the end of the previous step
+  std::map<ActionKey, double> previous_change;  // each action's change over the previous step
+  double previous_last_size = 0;                // that step's last converged increment (its fraction units)
   for (std::size_t s = 0; s < model_.steps.size(); ++s) {
     const LoadStep& step = model_.steps[s];
     std::map<ActionKey, std::pair<double, double>> ramps;
@@ -283,7 +285,23 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
     double largest_size = nominal;  // cap on the increment size after a failure (see below)
     int easy_at_cap = 0;
     int converged_increments = 0, cutbacks = 0;
-    double last_size = 0;  // size of the last converged increment of this step (0: none yet)
+    // Size of the last converged increment in this step's fraction units (0: none, no extrapolation). A step
+    // that goes on loading the same way as the previous one (every action changes by the same positive
+    // multiple c of its previous change) extrapolates from that step's last increment, which measures 1/c of it.
+    double last_size = 0;
+    {
+      double c = 0, largest = 0;
+      for (const auto& [key, ramp] : ramps) {
+        const double before = previous_change.count(key) ? previous_change[key] : 0.0;
+        if (std::abs(before) > largest) largest = std::abs(before), c = (ramp.second - ramp.first) / before;
+      }
+      bool proportional = c > 0;
+      for (const auto& [key, ramp] : ramps) {
+        const double before = previous_change.count(key) ? previous_change[key] : 0.0, now = ramp.second - ramp.first;
+        if (std::abs(now - c * before) > 1e-9 * (std::abs(now) + std::abs(before))) proportional = false;
+      }
+      if (proportional) last_size = previous_last_size / c;
+    }
     while (fraction < 1.0 - 1e-12) {
       // Never past the next point of the nominal grid (k / increments): after cut-backs the increments land on
       // the load levels the case asked for again.
@@ -294,8 +312,8 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
       report.step_name = step.name;
       report.increment = converged_increments + 1;
       report.step_fraction = target;
-      // Extrapolate within a step only (a new step may reverse the load), and not on the retry of a
-      // failed increment: a poor predictor must not cost the whole cut-back sequence.
+      // Extrapolate within a step or across steps that load the same way (not across a reversal), and not on
+      // the retry of a failed increment: a poor predictor must not cost the whole cut-back sequence.
       const double extrapolation =
           model_.options.extrapolate && last_size > 0 && cutbacks == 0 ? (target - fraction) / last_size : 0.0;
       if (solve_increment(target, extrapolation, ramps, report, on_progress)) {
@@ -340,7 +358,12 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
         size *= 0.5;
       }
     }
-    for (const auto& [key, ramp] : ramps) totals[key] = ramp.second;
+    previous_change.clear();
+    for (const auto& [key, ramp] : ramps) {
+      totals[key] = ramp.second;
+      previous_change[key] = ramp.second - ramp.first;
+    }
+    previous_last_size = last_size;
   }
   return {};
 }
