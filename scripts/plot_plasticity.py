@@ -83,6 +83,9 @@ if rows:
         for e, f in zip(*series["solid3d"]):
             if e >= 0.0134:
                 ours = interpolate(x, y, e)
+                if ours is None:
+                    print(f"  strain {e:.4f}: solid {f:.0f} kN, beyond the run")
+                    continue
                 print(f"  strain {e:.4f}: solid {f:.0f} kN, StrandFEM {ours:.0f} kN, difference {100 * (ours / f - 1):+.1f} %")
 a2.set_xlabel("strand axial strain")
 a2.set_ylabel("axial load (kN)")
