@@ -194,6 +194,7 @@ void ResultWriter::finish(const StaticAnalysis& analysis, const AnalysisStatus& 
                                   {"krylov_solves", a.krylov_solves},
                                   {"krylov_iterations", a.krylov_iterations},
                                   {"pattern_rebuilds", a.pattern_rebuilds},
+                                  {"rejected_extrapolations", a.rejected_extrapolations},
                                   {"assembly_seconds", a.assembly_seconds},
                                   {"linear_seconds", a.linear_seconds},
                                   {"factorization_seconds", l.factorization_seconds},

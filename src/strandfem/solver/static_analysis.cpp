@@ -131,7 +131,6 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
     if (key.component < 3) s.position[key.component] += delta;
     else s.rotation = (quaternion_from_rotation_vector(delta * Vec3::Unit(key.component - 3)) * s.rotation).normalized();
   }
-  if (extrapolation > 0) extrapolate_free_motion(extrapolation);
   update_slaves();
   for (Interaction* interaction : model_.interactions()) interaction->begin_increment();
   const int n = dofs_.equation_count;
@@ -206,6 +205,21 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
     return changes;
   };
   Residual current = evaluate_residual();
+  if (extrapolation > 0) {
+    // The extrapolated predictor must beat the plain one: after slip events or contact changes the last
+    // increment's motion is not proportional to the load, and extrapolating it can start Newton far off.
+    const std::vector<NodeState> plain = state_;
+    const double plain_residual = current.relative;
+    extrapolate_free_motion(extrapolation);
+    update_slaves();
+    current = evaluate_residual();
+    if (!(current.relative < plain_residual)) {
+      state_ = plain;
+      current = evaluate_residual();
+      extrapolation = 0;
+      ++statistics_.rejected_extrapolations;
+    }
+  }
   accept_iterate();
   // Newton iterations count from the last contact change (release or friction switch); the number of such
   // rounds per increment is capped separately.

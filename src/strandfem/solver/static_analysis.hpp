@@ -28,7 +28,8 @@ struct AnalysisStatistics {
   int newton_iterations = 0;   // tangent assemblies
   int krylov_solves = 0;       // linear solves done by GMRES with an older factorization
   int krylov_iterations = 0;
-  int pattern_rebuilds = 0;    // tangent patterns rebuilt and analyzed again (interaction pairs changed)
+  int pattern_rebuilds = 0;
+  int rejected_extrapolations = 0;  // extrapolated predictors worse than the plain one (not used)    // tangent patterns rebuilt and analyzed again (interaction pairs changed)
   double assembly_seconds = 0; // tangent assembly (elements and interactions) for Newton corrections
   double linear_seconds = 0;   // factorizations, solves and GMRES
 };
