@@ -13,7 +13,7 @@ namespace strandfem {
 namespace {
 constexpr int kMaxContactRounds = 40;  // contact set changes per increment before a cut-back
 constexpr int kEasyIncrementsBeforeRegrowth = 3;
-constexpr double kExtrapolatedAcceptance = 1e-3;  // of the tolerance, for a predictor taken without correction
+constexpr double kPredictorAcceptance = 1e-3;  // of the tolerance, for a predictor taken without correction
 
 // Adds the wall time of its scope to a total.
 class Timer {
@@ -232,12 +232,12 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
     if (!std::isfinite(current.relative)) return false;
     // Displacement criterion: the last correction is small against the increment's motion (rotations
     // weighted by the mean element length).
-    // An extrapolated predictor is accepted as it stands only when it is in equilibrium far within the
-    // tolerance: otherwise its residual would accumulate from increment to increment, so one correction and
+    // A predictor (plain or extrapolated) is accepted as it stands only when it is in equilibrium far within
+    // the tolerance: otherwise its residual would pile up from increment to increment, so one correction and
     // the displacement test must confirm it.
     const bool displacement_ok =
         iteration > 0 ? last_correction2_ <= opt.displacement_tolerance * opt.displacement_tolerance * increment_displacement2
-                      : extrapolation == 0 || current.relative <= kExtrapolatedAcceptance * std::min(opt.force_tolerance, opt.moment_tolerance);
+                      : current.relative <= kPredictorAcceptance * std::min(opt.force_tolerance, opt.moment_tolerance);
     if (current.forces_ok && displacement_ok) {
       // Converged for the interactions' current states (contact: active set, held friction); they may
       // change them (contacts left in tension open) and Newton goes on.
