@@ -1,9 +1,8 @@
 // Runs the strandfem program on a case and reads its results (verification tests go through the program).
 #pragma once
-#include <cstdlib>
-#include <filesystem>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -63,6 +62,24 @@ inline std::vector<std::map<std::string, double>> read_csv(const std::filesystem
     rows.push_back(row);
   }
   return rows;
+}
+
+// The history.csv increment at which the axial strain equals `strain` (-1: none).
+inline int increment_at_strain(const std::vector<std::map<std::string, double>>& history, double strain) {
+  for (const auto& r : history)
+    if (std::abs(r.at("axial_strain") - strain) < 1e-9) return static_cast<int>(r.at("increment"));
+  return -1;
+}
+
+// Mean line force on the core (wire_b 0) over 50 <= z <= 150 mm, away from the end planes, at an increment of
+// contacts.csv: the paper's Table 2 quantity (N/mm); NaN when no such point is closed.
+inline double core_wire_line_force(const std::vector<std::map<std::string, double>>& contacts, int increment) {
+  double sum = 0;
+  int count = 0;
+  for (const auto& p : contacts)
+    if (p.at("increment") == increment && p.at("wire_b") == 0 && p.at("z_mm") >= 50 && p.at("z_mm") <= 150)
+      sum += p.at("normal_force"), ++count;
+  return count > 0 ? sum / count : std::nan("");
 }
 
 // One text column of a CSV file, row by row.

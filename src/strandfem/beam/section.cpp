@@ -26,6 +26,7 @@ ElasticSection::ElasticSection(const SectionGeometry& geometry, const Material& 
   stiffness_ << E * geometry.area, G * geometry.shear_factor * geometry.area,
       G * geometry.shear_factor * geometry.area, G * geometry.torsion_constant, E * geometry.inertia_2,
       E * geometry.inertia_3;
+  fibres_ = disc_fibres(geometry.contact_radius > 0 ? geometry.contact_radius : std::sqrt(geometry.area / std::numbers::pi));
 }
 
 SectionResponse ElasticSection::evaluate(const Vec6& strain, const SectionHistory&, SectionHistory&) const {
@@ -36,15 +37,13 @@ SectionResponse ElasticSection::evaluate(const Vec6& strain, const SectionHistor
 }
 
 SectionPointSummary ElasticSection::summary(const Vec6& strain, const SectionHistory&) const {
-  const double radius = geometry_.contact_radius > 0 ? geometry_.contact_radius : std::sqrt(geometry_.area / std::numbers::pi);
   const double E = material_.youngs_modulus, G = material_.shear_modulus();
   SectionPointSummary s;
-  const std::vector<Fibre> fibres = disc_fibres(radius);
-  for (const Fibre& f : fibres) {
+  for (const Fibre& f : fibres_) {
     const Vec3 e = fibre_strain_operator(f, geometry_.shear_factor) * strain;
     const double stress = von_mises(Vec3(E * e[0], G * e[1], G * e[2]));
     s.max_von_mises = std::max(s.max_von_mises, stress);
-    s.mean_von_mises += stress / fibres.size();
+    s.mean_von_mises += stress / fibres_.size();
   }
   return s;
 }

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "strandfem/beam/fibre_quadrature.hpp"
 #include "strandfem/beam/material.hpp"
 #include "strandfem/core/types.hpp"
 
@@ -72,6 +73,7 @@ class ElasticSection final : public Section {
   SectionGeometry geometry_;
   Material material_;
   Vec6 stiffness_;
+  std::vector<Fibre> fibres_;  // where summary() samples the stresses: a disc of the section's area
 };
 
 // The section of a wire of this material: FibreSection when the material has plasticity (circular
