@@ -250,6 +250,7 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
     }
     if (since_change == opt.max_iterations) return false;
     ++statistics_.newton_iterations;
+    ++report.corrections;
     {
       const Timer timer(statistics_.assembly_seconds);
       assembler_->assemble(model_, state_, internal_forces_, &values_);
@@ -285,8 +286,9 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
   std::map<ActionKey, double> totals;  // totals at the end of the previous step
   std::map<ActionKey, double> previous_change;  // each action's change over the previous step
   double previous_last_size = 0;                // that step's last converged increment (its fraction units)
-  for (std::size_t s = 0; s < model_.steps.size(); ++s) {
-    const LoadStep& step = model_.steps[s];
+  const std::vector<LoadRamp> protocol = expand_load_steps(model_.steps);
+  for (std::size_t s = 0; s < protocol.size(); ++s) {
+    const LoadRamp& step = protocol[s];
     std::map<ActionKey, std::pair<double, double>> ramps;
     for (const auto& [key, value] : totals) ramps[key] = {value, value};
     for (const NodalAction& a : step.actions) {
@@ -324,6 +326,7 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
       IncrementReport report;
       report.step = static_cast<int>(s);
       report.step_name = step.name;
+      report.origin = step.origin;
       report.increment = converged_increments + 1;
       report.step_fraction = target;
       // Extrapolate within a step or across steps that load the same way (not across a reversal), and not on
@@ -345,7 +348,10 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
         // Regrow after an easy increment, but not straight back to a size that just failed (each retry that
         // fails costs a whole failed increment): that cap doubles after kEasyIncrementsBeforeRegrowth easy
         // increments at it, never beyond the nominal size.
-        const bool easy = report.iterations <= 4;
+        // Easy: converged within a quarter of the allowed Newton corrections. Contact rounds do not count (they
+        // re-evaluate the residual only), and elastoplastic strands converge linearly in about 6 corrections
+        // at any increment size (fibres crossing the yield surface), so larger increments cost no more.
+        const bool easy = report.corrections <= std::max(2, model_.options.max_iterations / 4);
         easy_at_cap = easy && size >= largest_size ? easy_at_cap + 1 : 0;
         if (easy_at_cap >= kEasyIncrementsBeforeRegrowth && largest_size < nominal) {
           largest_size = std::min(nominal, 2.0 * largest_size);

@@ -13,11 +13,13 @@ namespace strandfem {
 
 // What a converged increment reports.
 struct IncrementReport {
-  int step = 0;                // 0-based step index
+  int step = 0;                // 0-based index of the ramp in the expanded load protocol
   std::string step_name;
+  RampOrigin origin;           // the case step (and cycle) the ramp comes from
   int increment = 0;           // 1-based converged increment counter within the step
   double step_fraction = 0;    // load factor within the step, 0..1
-  int iterations = 0;
+  int iterations = 0;          // Newton iterations and contact rounds
+  int corrections = 0;         // Newton corrections (tangent solves) among them
   std::vector<double> residual_history;  // relative residual (max of force and moment ratios) per iteration
   double residual_norm = 0;    // the final relative residual
 };
@@ -28,8 +30,8 @@ struct AnalysisStatistics {
   int newton_iterations = 0;   // tangent assemblies
   int krylov_solves = 0;       // linear solves done by GMRES with an older factorization
   int krylov_iterations = 0;
-  int pattern_rebuilds = 0;
-  int rejected_extrapolations = 0;  // extrapolated predictors worse than the plain one (not used)    // tangent patterns rebuilt and analyzed again (interaction pairs changed)
+  int pattern_rebuilds = 0;    // tangent patterns rebuilt and analyzed again (interaction pairs changed)
+  int rejected_extrapolations = 0;  // extrapolated predictors worse than the plain one (not used)
   double assembly_seconds = 0; // tangent assembly (elements and interactions) for Newton corrections
   double linear_seconds = 0;   // factorizations, solves and GMRES
 };
