@@ -1,0 +1,92 @@
+#include "strandfem/post/bending.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace strandfem {
+
+double tensioned_beam_deflection(double load, double tension, double bending_stiffness, double span, double x) {
+  const double k = std::sqrt(bending_stiffness / tension), u = x / k, a = 0.25 * span / k, t = std::tanh(a);
+  // -sinh u + tanh(a) cosh u = [(t - 1) e^u + (t + 1) e^-u] / 2 with t - 1 = -2 e^-2a / (1 + e^-2a): written
+  // with e^(u - 2a) it stays finite for slender strands (L/k of several hundred), where sinh and cosh overflow.
+  const double e2a = std::exp(-2.0 * a);
+  const double bracket = u - t + 0.5 * (-2.0 * std::exp(u - 2.0 * a) / (1.0 + e2a) + (t + 1.0) * std::exp(-u));
+  return load * k / (2.0 * tension) * bracket;
+}
+
+double tensioned_beam_midspan_deflection(double load, double tension, double bending_stiffness, double span) {
+  const double k = std::sqrt(bending_stiffness / tension);
+  return load / tension * (0.25 * span - k * std::tanh(0.25 * span / k));
+}
+
+double equivalent_bending_stiffness(double compliance, double tension, double span) {
+  const double string_compliance = 0.25 * span / tension;
+  if (!(compliance > 0)) return std::numeric_limits<double>::infinity();
+  if (compliance >= string_compliance) return 0.0;
+  // Compliance falls monotonically from L/(4T) (k -> 0) to 0 (k -> infinity): bisect on log k.
+  auto compliance_at = [&](double k) { return (0.25 * span - k * std::tanh(0.25 * span / k)) / tension; };
+  double low = 1e-9 * span, high = 1e9 * span;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = std::sqrt(low * high);
+    (compliance_at(mid) > compliance ? low : high) = mid;
+  }
+  const double k = std::sqrt(low * high);
+  return tension * k * k;
+}
+
+std::vector<HysteresisLoop> hysteresis_loops(const std::vector<LoadDeflectionPoint>& history) {
+  std::vector<HysteresisLoop> loops;
+  for (std::size_t i = 0; i < history.size();) {
+    const int cycle = history[i].cycle;
+    if (cycle == 0) {
+      ++i;
+      continue;
+    }
+    std::size_t end = i;
+    while (end < history.size() && history[end].cycle == cycle) ++end;
+    // A complete cycle has both halves; the start is the point before its first increment.
+    const bool complete = end > i + 1 && history[end - 1].returning && !history[i].returning;
+    if (complete && i > 0) {
+      std::vector<const LoadDeflectionPoint*> polygon = {&history[i - 1]};
+      for (std::size_t j = i; j < end; ++j) polygon.push_back(&history[j]);
+      HysteresisLoop loop;
+      loop.cycle = cycle;
+      const LoadDeflectionPoint& start = *polygon.front();
+      std::size_t peak = 0;
+      for (std::size_t j = 0; j < polygon.size(); ++j)
+        if (!polygon[j]->returning || j == 0) peak = j;
+      loop.peak_load = polygon[peak]->load;
+      loop.peak_deflection = polygon[peak]->deflection;
+      loop.start_deflection = start.deflection;
+      loop.end_deflection = polygon.back()->deflection;
+      double twice_area = 0;
+      for (std::size_t j = 0; j < polygon.size(); ++j) {
+        const LoadDeflectionPoint& a = *polygon[j];
+        const LoadDeflectionPoint& b = *polygon[(j + 1) % polygon.size()];
+        twice_area += a.deflection * b.load - b.deflection * a.load;
+      }
+      loop.area = 0.5 * std::abs(twice_area);
+      auto slope = [](const LoadDeflectionPoint& a, const LoadDeflectionPoint& b) {
+        const double dy = b.deflection - a.deflection;
+        return dy != 0 ? (b.load - a.load) / dy : std::numeric_limits<double>::infinity();
+      };
+      loop.secant_stiffness = slope(start, *polygon[peak]);
+      loop.loading_tangent = slope(start, *polygon[1]);
+      if (peak + 1 < polygon.size()) loop.unloading_tangent = slope(*polygon[peak], *polygon[peak + 1]);
+      loops.push_back(loop);
+    }
+    i = end;
+  }
+  return loops;
+}
+
+bool loop_is_steady(const HysteresisLoop& previous, const HysteresisLoop& current, double tolerance) {
+  const double area_scale = std::max(previous.area, current.area);
+  const double deflection_scale =
+      std::max(std::abs(current.peak_deflection - current.start_deflection), std::abs(previous.peak_deflection - previous.start_deflection));
+  return std::abs(current.area - previous.area) <= tolerance * area_scale &&
+         std::abs(current.peak_deflection - previous.peak_deflection) <= tolerance * deflection_scale;
+}
+
+}  // namespace strandfem

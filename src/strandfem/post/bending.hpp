@@ -1,0 +1,51 @@
+// Bending under tension: closed-form deflections of a tensioned beam (paper eqs. 3.1, 3.2) and the
+// hysteresis loops of a cyclic load-deflection history.
+#pragma once
+#include <vector>
+
+namespace strandfem {
+
+// A beam of bending stiffness EI (N mm^2) under tension T (N), clamped at both ends (no rotation, span L in
+// mm) with a transverse load V (N) at midspan; k = sqrt(EI / T). Deflection at distance x from a clamp
+// (0 <= x <= L/2; the curve is symmetric), eq. 3.2 with s = L/4:
+//   y(x) = V k / (2T) [x/k - sinh(x/k) + tanh(s/k) (cosh(x/k) - 1)].
+// It tends to the Euler-Bernoulli V x^2 (3L - 4x) / (48 EI) as T -> 0 and to the string V x / (2T) as EI -> 0.
+double tensioned_beam_deflection(double load, double tension, double bending_stiffness, double span, double x);
+
+// Midspan value of the same curve (eq. 3.1): y_max = V/T (L/4 - k tanh(L / (4k))).
+double tensioned_beam_midspan_deflection(double load, double tension, double bending_stiffness, double span);
+
+// The bending stiffness EI for which eq. 3.1 gives midspan compliance y/V = compliance (mm/N) under tension
+// T: 0 when the compliance reaches the string's L/(4T), infinity when it is <= 0.
+double equivalent_bending_stiffness(double compliance, double tension, double span);
+
+// One converged state of a cyclic transverse load: load V and midspan deflection y.
+struct LoadDeflectionPoint {
+  int cycle = 0;          // 1-based cycle of the load protocol
+  bool returning = false; // on the half that brings V back
+  double load = 0;        // N
+  double deflection = 0;  // mm
+};
+
+// A cycle's loop: from the state before the cycle, out to the peak load and back.
+struct HysteresisLoop {
+  int cycle = 0;
+  double area = 0;                // N mm: energy dissipated in the cycle (polygon closed by a straight line)
+  double peak_load = 0;           // V at the turning point
+  double peak_deflection = 0;     // y there
+  double start_deflection = 0;    // y where the cycle started
+  double end_deflection = 0;      // y where it ended (ratchet: end - start)
+  double secant_stiffness = 0;    // (V_peak - V_start) / (y_peak - y_start), N/mm
+  double loading_tangent = 0;     // dV/dy over the first increment out, N/mm
+  double unloading_tangent = 0;   // dV/dy over the first increment back, N/mm
+};
+
+// Loops of every complete cycle in the history (points in load order; the point before a cycle's first
+// increment, e.g. the end of the tension ramp, is the cycle's start).
+std::vector<HysteresisLoop> hysteresis_loops(const std::vector<LoadDeflectionPoint>& history);
+
+// Whether cycle n repeats cycle n - 1: loop areas and peak deflections within the relative tolerance (of
+// the larger area, and of the deflection range of the cycle).
+bool loop_is_steady(const HysteresisLoop& previous, const HysteresisLoop& current, double tolerance);
+
+}  // namespace strandfem

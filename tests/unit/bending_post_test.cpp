@@ -1,0 +1,71 @@
+// Requirement: the closed-form tensioned-beam deflections (eqs. 3.1, 3.2) have the right limits and agree
+// with each other; the equivalent EI inverts eq. 3.1; hysteresis loops give the area of a known polygon.
+#include "strandfem/post/bending.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace strandfem {
+namespace {
+
+TEST(TensionedBeam, MidspanOfTheCurveIsEq31AndSymmetricLimitsHold) {
+  const double V = 40000, T = 280000, L = 1000;
+  for (const double EI : {82.7e6, 6357.8e6}) {  // S32 EImin and EImax (paper: 82.7 and 6357.8 N m^2)
+    EXPECT_NEAR(tensioned_beam_deflection(V, T, EI, L, 0.5 * L), tensioned_beam_midspan_deflection(V, T, EI, L),
+                1e-9 * L);
+    EXPECT_NEAR(tensioned_beam_deflection(V, T, EI, L, 0.0), 0.0, 1e-12);
+  }
+  // No tension: Euler-Bernoulli clamped-clamped V L^3 / (192 EI) (k >> L).
+  const double EI = 1e9, small_T = 1e-3;
+  EXPECT_NEAR(tensioned_beam_midspan_deflection(V, small_T, EI, L), V * L * L * L / (192 * EI), 1e-4 * V * L * L * L / (192 * EI));
+  EXPECT_NEAR(tensioned_beam_deflection(V, small_T, EI, L, 0.25 * L), V * std::pow(0.25 * L, 2) * (3 * L - L) / (48 * EI),
+              1e-4 * V * L * L * L / (192 * EI));
+  // No bending stiffness: the string V L / (4T); and a very slender strand stays finite.
+  EXPECT_NEAR(tensioned_beam_midspan_deflection(V, T, 1e-6, L), V * L / (4 * T), 1e-6 * V * L / (4 * T));
+  EXPECT_NEAR(tensioned_beam_deflection(V, T, 1e-6, L, 0.25 * L), V * 0.25 * L / (2 * T), 1e-6 * V * L / T);
+  // S32 case 4 (T = 280 kN, V = 40 kN): EImin gives the larger deflection.
+  EXPECT_GT(tensioned_beam_midspan_deflection(V, T, 82.7e6, L), tensioned_beam_midspan_deflection(V, T, 6357.8e6, L));
+}
+
+TEST(TensionedBeam, EquivalentStiffnessInvertsEq31) {
+  const double T = 280000, L = 1000, V = 40000;
+  for (const double EI : {82.7e6, 1e9, 6357.8e6}) {
+    const double y = tensioned_beam_midspan_deflection(V, T, EI, L);
+    EXPECT_NEAR(equivalent_bending_stiffness(y / V, T, L), EI, 1e-8 * EI);
+  }
+  EXPECT_EQ(equivalent_bending_stiffness(L / (4 * T), T, L), 0.0);
+  EXPECT_TRUE(std::isinf(equivalent_bending_stiffness(0.0, T, L)));
+}
+
+TEST(Hysteresis, ParallelogramLoopAreaStiffnessAndSteadiness) {
+  // Two identical cycles from (0, 0):
+  // out (0,0) -> (1,10) -> (3,12); back (3,12) -> (2,2) -> (0,0). Its area: triangles (0,0),(1,10),(3,12) and (0,0),(3,12),(2,2), 9 each.
+  std::vector<LoadDeflectionPoint> history = {{0, false, 0, 0}};  // end of the tension ramp
+  for (int cycle = 1; cycle <= 2; ++cycle) {
+    history.push_back({cycle, false, 10, 1});
+    history.push_back({cycle, false, 12, 3});
+    history.push_back({cycle, true, 2, 2});
+    history.push_back({cycle, true, 0, 0});
+  }
+  const auto loops = hysteresis_loops(history);
+  ASSERT_EQ(loops.size(), 2u);
+  for (const auto& loop : loops) {
+    EXPECT_NEAR(loop.area, 18.0, 1e-12);
+    EXPECT_DOUBLE_EQ(loop.peak_load, 12);
+    EXPECT_DOUBLE_EQ(loop.peak_deflection, 3);
+    EXPECT_DOUBLE_EQ(loop.secant_stiffness, 4);
+    EXPECT_DOUBLE_EQ(loop.loading_tangent, 10);
+    EXPECT_DOUBLE_EQ(loop.unloading_tangent, 10);
+  }
+  EXPECT_TRUE(loop_is_steady(loops[0], loops[1], 0.01));
+  HysteresisLoop larger = loops[1];
+  larger.area *= 1.1;
+  EXPECT_FALSE(loop_is_steady(loops[0], larger, 0.05));
+  // An incomplete last cycle (no return half) gives no loop.
+  history.push_back({3, false, 10, 1});
+  EXPECT_EQ(hysteresis_loops(history).size(), 2u);
+}
+
+}  // namespace
+}  // namespace strandfem
