@@ -35,7 +35,7 @@ int run_case(const std::string& case_path, const std::string& output_dir, int th
   auto on_increment = [&](const strandfem::IncrementReport& r) {
     writer.on_increment(analysis, r);
     if (!quiet)
-      std::cerr << "step " << r.step + 1 << "/" << step_count << " '" << r.step_name << "' increment " << r.increment
+      std::cerr << "step " << r.origin.step + 1 << "/" << step_count << " '" << r.step_name << "' increment " << r.increment
                 << " (fraction " << r.step_fraction << "): " << r.iterations << " iterations, residual "
                 << r.residual_norm << "\n";
   };

@@ -330,12 +330,13 @@ class CaseParser {
       const YAML::Node s = node[i];
       const std::string path = at("steps", i);
       if (out_.strand)
-        reader_.check_keys(s, path, {"name", "increments", "axial_strain", "axial_force", "torque", "twist", "transverse_force", "forces", "motions"});
+        reader_.check_keys(s, path, {"name", "increments", "cycles", "axial_strain", "axial_force", "torque", "twist", "transverse_force", "forces", "motions"});
       else
-        reader_.check_keys(s, path, {"name", "increments", "forces", "motions"});
+        reader_.check_keys(s, path, {"name", "increments", "cycles", "forces", "motions"});
       LoadStep step;
       step.name = s["name"] ? reader_.text(s["name"], path + ".name") : "step" + std::to_string(i + 1);
       step.increments = reader_.integer(reader_.require(s, path, "increments"), path + ".increments", 1);
+      if (s["cycles"]) step.cycles = reader_.integer(s["cycles"], path + ".cycles", 1);
       if (out_.strand) parse_strand_actions(s, path, step);
       if (s["forces"]) parse_forces(s["forces"], path + ".forces", step);
       if (s["motions"]) parse_motions(s["motions"], path + ".motions", step);
@@ -359,11 +360,15 @@ class CaseParser {
     if (s["transverse_force"]) {
       const YAML::Node t = s["transverse_force"];
       const std::string tp = path + ".transverse_force";
-      reader_.check_keys(t, tp, {"value", "z", "direction"});
+      reader_.check_keys(t, tp, {"value", "z", "direction", "through"});
       const double value = reader_.number(reader_.require(t, tp, "value"), tp + ".value");
       YAML::Node selector;
       selector["core_z"] = reader_.require(t, tp, "z");
       const int node = node_at(selector, tp);
+      // through: core (the load acts on the core node alone and reaches the other layers through contact) or
+      // section (every wire's node at that z is tied rigidly to the core node, like a loading clamp).
+      if (t["through"] && reader_.choice(t["through"], tp + ".through", {"core", "section"}) == "section")
+        add_rigid_section(node);
       Vec3 direction = Vec3::UnitY();
       if (t["direction"]) {
         const auto d = reader_.numbers(t["direction"], tp + ".direction", 3);
@@ -374,6 +379,20 @@ class CaseParser {
       }
       for (int c = 0; c < 2; ++c)
         if (direction[c] != 0) step.actions.push_back({NodalAction::kForce, node, c, value * direction[c]});
+    }
+  }
+
+  // Ties the node nearest the core node's z on every other wire to the core node (once per core node).
+  void add_rigid_section(int core_node) {
+    Mesh& m = out_.model.mesh;
+    const double z = m.nodes[core_node].reference.position.z();
+    for (std::size_t w = 1; w < m.wires.size(); ++w) {
+      int nearest = m.wires[w].nodes.front();
+      for (const int n : m.wires[w].nodes)
+        if (std::abs(m.nodes[n].reference.position.z() - z) < std::abs(m.nodes[nearest].reference.position.z() - z)) nearest = n;
+      bool tied = false;
+      for (const RigidTie& t : out_.model.ties) tied |= t.slave == nearest;
+      if (!tied) out_.model.ties.push_back(make_rigid_tie(nearest, core_node, m.nodes[nearest].reference, m.nodes[core_node].reference));
     }
   }
 

@@ -26,6 +26,9 @@ HistoryRow history_row(const CaseDefinition& c, const StaticAnalysis& analysis, 
   row.load_factor = report.step + report.step_fraction;
   row.iterations = report.iterations;
   row.residual_norm = report.residual_norm;
+  row.case_step = report.origin.step + 1;
+  row.cycle = report.origin.cycle;
+  row.returning = report.origin.returning;
   const auto& f = analysis.internal_forces();
   if (c.monitor_node >= 0) {
     row.monitor_displacement = displacement(analysis, c.monitor_node);
@@ -71,25 +74,26 @@ void prepare(const std::filesystem::path& directory) {
 }  // namespace
 
 ResultWriter::ResultWriter(std::filesystem::path directory, const CaseDefinition& c)
-    : directory_(std::move(directory)), case_(c), contacts_((prepare(directory_), directory_), c), wires_(directory_, c) {
+    : directory_(std::move(directory)), case_(c), contacts_((prepare(directory_), directory_), c), wires_(directory_, c), bending_(directory_, c) {
   history_.open(directory_ / "history.csv");
   if (!history_) throw std::runtime_error("cannot write " + (directory_ / "history.csv").string());
   history_ << "step,increment,load_factor,axial_strain,axial_force_N,torque_Nmm,end_rotation_rad,transverse_load_N,"
-              "midspan_deflection_mm,monitor_ux_mm,monitor_uy_mm,monitor_uz_mm,newton_iterations,residual_norm,monitor_fx_N,monitor_fy_N,monitor_fz_N\n";
+              "midspan_deflection_mm,monitor_ux_mm,monitor_uy_mm,monitor_uz_mm,newton_iterations,residual_norm,monitor_fx_N,monitor_fy_N,monitor_fz_N,case_step,cycle,returning\n";
 }
 
 void ResultWriter::on_increment(const StaticAnalysis& analysis, const IncrementReport& report) {
   const HistoryRow r = history_row(case_, analysis, report);
   rows_.push_back(r);
-  history_ << fmt::format("{},{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{},{:.4e},{:.10g},{:.10g},{:.10g}\n",
+  history_ << fmt::format("{},{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{},{:.4e},{:.10g},{:.10g},{:.10g},{},{},{}\n",
                           r.step, r.increment, r.load_factor, r.axial_strain, r.axial_force, r.torque, r.end_rotation,
                           r.transverse_load, r.midspan_deflection, r.monitor_displacement.x(), r.monitor_displacement.y(),
                           r.monitor_displacement.z(), r.iterations, r.residual_norm, r.monitor_force.x(), r.monitor_force.y(),
-                          r.monitor_force.z());
+                          r.monitor_force.z(), r.case_step, r.cycle, r.returning ? 1 : 0);
   history_.flush();
   ++increments_seen_;
   contacts_.on_increment(analysis, report, increments_seen_, r.load_factor);
   wires_.on_increment(analysis, report, increments_seen_, r.load_factor);
+  bending_.on_increment(analysis, report, r.axial_force, r.transverse_load, r.midspan_deflection);
   last_written_ = false;
   if (case_.output.vtu && increments_seen_ % case_.output.every == 0) {
     write_vtu(analysis, r.load_factor);
@@ -204,6 +208,7 @@ void ResultWriter::finish(const StaticAnalysis& analysis, const AnalysisStatus& 
                                   {"factor_entries", l.factor_entries},
                                   {"factorization_flops", l.factorization_flops}};
   summary["contacts"] = ContactWriter::summary(analysis);
+  if (bending_.active()) summary["bending"] = bending_.finish();
   summary["configuration"] = case_.resolved;
   std::ofstream(directory_ / "summary.json") << summary.dump(2) << "\n";
 }

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "strandfem/io/bending_writer.hpp"
 #include "strandfem/io/case_file.hpp"
 #include "strandfem/io/contact_writer.hpp"
 #include "strandfem/io/wire_writer.hpp"
@@ -23,6 +24,9 @@ struct HistoryRow {
   Vec3 monitor_force = Vec3::Zero();  // internal force at the monitor node: the reaction where it is driven
   int iterations = 0;
   double residual_norm = 0;
+  int case_step = 0;        // 1-based step of the case file (cyclic steps expand into several ramps)
+  int cycle = 0;            // 1-based cycle of a cyclic step, 0 otherwise
+  bool returning = false;   // on the half of the cycle that goes back
 };
 
 HistoryRow history_row(const CaseDefinition& c, const StaticAnalysis& analysis, const IncrementReport& report);
@@ -47,6 +51,7 @@ class ResultWriter {
   std::ofstream history_;
   ContactWriter contacts_;
   WireWriter wires_;
+  BendingWriter bending_;
   std::vector<HistoryRow> rows_;
   std::vector<std::pair<double, std::string>> frames_;
   int increments_seen_ = 0;

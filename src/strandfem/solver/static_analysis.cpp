@@ -365,12 +365,16 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
         state_ = committed_state_;
         applied_motion_ = committed_motion_;
         assembler_->assemble(model_, state_, internal_forces_, nullptr);
-        if (++cutbacks > model_.options.max_cutbacks) {
+        // Also stop when the size falls below what max_cutbacks halvings of the nominal size allow: converging
+        // and failing in turn could otherwise shrink the increments without bound (the load stalls at a limit).
+        const double smallest = nominal * std::ldexp(1.0, -model_.options.max_cutbacks);
+        if (++cutbacks > model_.options.max_cutbacks || 0.5 * size < smallest * (1.0 - 1e-9)) {
           AnalysisStatus status;
           status.converged = false;
           status.message = "step '" + step.name + "' (" + std::to_string(s + 1) + ") did not converge at load fraction " +
                            std::to_string(target) + " after " + std::to_string(model_.options.max_cutbacks) +
-                           " increment cut-backs (last relative residual " + std::to_string(report.residual_norm) + ")";
+                           " increment cut-backs or at the smallest increment, 1/2^" + std::to_string(model_.options.max_cutbacks) +
+                           " of the nominal one (last relative residual " + std::to_string(report.residual_norm) + ")";
           return status;
         }
         largest_size = std::min(largest_size, 0.5 * size);

@@ -1,0 +1,71 @@
+#include "strandfem/io/bending_writer.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "strandfem/post/analytic.hpp"
+
+namespace strandfem {
+
+BendingWriter::BendingWriter(const std::filesystem::path& directory, const CaseDefinition& c)
+    : directory_(directory), case_(c) {
+  if (!c.strand) return;
+  for (const LoadStep& s : c.model.steps) active_ |= s.cycles > 0;
+  if (!active_) return;
+  const BendingStiffnessBounds bounds = bending_stiffness_bounds(*c.strand);
+  ei_max_ = bounds.ei_max;
+  ei_min_ = bounds.ei_min;
+  curves_.open(directory / "deflection_curves.csv");
+  if (!curves_) throw std::runtime_error("cannot write " + (directory / "deflection_curves.csv").string());
+  curves_ << "cycle,transverse_load_N,axial_force_N,z_mm,deflection_mm,eq32_ei_max_mm,eq32_ei_min_mm\n";
+}
+
+void BendingWriter::on_increment(const StaticAnalysis& analysis, const IncrementReport& report, double axial_force,
+                                 double transverse_load, double midspan_deflection) {
+  if (!active_) return;
+  history_.push_back({report.origin.cycle, report.origin.returning, transverse_load, midspan_deflection});
+  const bool peak = report.origin.cycle > 0 && !report.origin.returning && report.step_fraction >= 1.0 - 1e-12;
+  if (!peak) return;
+  peak_tension_.push_back(axial_force);
+  // The core's transverse deflection along the strand beside eq. 3.2 (x from the nearer clamp).
+  const Model& model = analysis.model();
+  const double length = case_.axial_length;
+  for (const int node : model.mesh.wires[0].nodes) {
+    const Vec3 u = analysis.state()[node].position - model.mesh.nodes[node].reference.position;
+    const double z = model.mesh.nodes[node].reference.position.z(), x = std::min(z, length - z);
+    curves_ << fmt::format("{},{:.8g},{:.8g},{:.6f},{:.8g},{:.8g},{:.8g}\n", report.origin.cycle, transverse_load, axial_force, z,
+                           std::hypot(u.x(), u.y()),
+                           tensioned_beam_deflection(transverse_load, axial_force, ei_max_, length, x),
+                           tensioned_beam_deflection(transverse_load, axial_force, ei_min_, length, x));
+  }
+  curves_.flush();
+}
+
+nlohmann::json BendingWriter::finish() {
+  if (!active_) return nullptr;
+  const std::vector<HysteresisLoop> loops = hysteresis_loops(history_);
+  std::ofstream out(directory_ / "loops.csv");
+  out << "cycle,area_Nmm,peak_load_N,peak_deflection_mm,start_deflection_mm,end_deflection_mm,secant_stiffness_N_per_mm,"
+         "secant_ei_Nm2,loading_tangent_N_per_mm,unloading_tangent_N_per_mm,eq31_ei_max_mm,eq31_ei_min_mm,steady\n";
+  nlohmann::json rows = nlohmann::json::array();
+  const double length = case_.axial_length;
+  for (std::size_t i = 0; i < loops.size(); ++i) {
+    const HysteresisLoop& l = loops[i];
+    const double tension = l.cycle - 1 < static_cast<int>(peak_tension_.size()) ? peak_tension_[l.cycle - 1] : 0.0;
+    const double travel = l.peak_deflection - l.start_deflection;
+    const double secant_ei = tension > 0 ? equivalent_bending_stiffness(travel / l.peak_load, tension, length) : 0.0;
+    const double y_max = tension > 0 ? tensioned_beam_midspan_deflection(l.peak_load, tension, ei_max_, length) : 0.0;
+    const double y_min = tension > 0 ? tensioned_beam_midspan_deflection(l.peak_load, tension, ei_min_, length) : 0.0;
+    const bool steady = i > 0 && loop_is_steady(loops[i - 1], l, 0.02);
+    out << fmt::format("{},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{}\n", l.cycle, l.area,
+                       l.peak_load, l.peak_deflection, l.start_deflection, l.end_deflection, l.secant_stiffness,
+                       1e-6 * secant_ei, l.loading_tangent, l.unloading_tangent, y_max, y_min, steady ? 1 : 0);
+    rows.push_back({{"cycle", l.cycle}, {"area_Nmm", l.area}, {"peak_load_N", l.peak_load},
+                    {"peak_deflection_mm", l.peak_deflection}, {"secant_ei_Nm2", 1e-6 * secant_ei},
+                    {"eq31_ei_max_mm", y_max}, {"eq31_ei_min_mm", y_min}, {"steady", steady}});
+  }
+  return {{"ei_max_Nm2", 1e-6 * ei_max_}, {"ei_min_Nm2", 1e-6 * ei_min_}, {"loops", rows}};
+}
+
+}  // namespace strandfem

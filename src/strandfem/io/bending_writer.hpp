@@ -1,0 +1,37 @@
+// Writes the bending-under-tension results of cyclic strand cases: deflection_curves.csv (core deflection
+// along the strand at each cycle's peak load beside eq. 3.2 for EImax and EImin) and loops.csv (one row per
+// hysteresis loop), and summarizes them for summary.json.
+#pragma once
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "strandfem/io/case_file.hpp"
+#include "strandfem/post/bending.hpp"
+#include "strandfem/solver/static_analysis.hpp"
+
+namespace strandfem {
+
+class BendingWriter {
+ public:
+  // Active for strand cases with a cyclic step; otherwise every call does nothing.
+  BendingWriter(const std::filesystem::path& directory, const CaseDefinition& c);
+  bool active() const { return active_; }
+  // transverse_load (N) and midspan_deflection (mm) of the converged increment, as in history.csv.
+  void on_increment(const StaticAnalysis& analysis, const IncrementReport& report, double axial_force,
+                    double transverse_load, double midspan_deflection);
+  // Writes loops.csv; returns the summary block (references, loops, steadiness).
+  nlohmann::json finish();
+
+ private:
+  std::filesystem::path directory_;
+  const CaseDefinition& case_;
+  bool active_ = false;
+  double ei_max_ = 0, ei_min_ = 0;   // N mm^2 (eqs. 1.1, 1.2)
+  std::ofstream curves_;
+  std::vector<LoadDeflectionPoint> history_;
+  std::vector<double> peak_tension_;  // axial force at each cycle's peak
+};
+
+}  // namespace strandfem
