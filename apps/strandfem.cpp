@@ -113,7 +113,11 @@ int main(int argc, char** argv) {
     if (info->parsed()) {
       const strandfem::CaseDefinition c = strandfem::load_case(case_path);
       for (const auto& w : c.warnings) std::cerr << "warning: " << w << "\n";
-      std::cout << strandfem::model_report(c).dump(2) << "\n";
+      std::cout << strandfem::model_report(c).dump(2) << "\n" << std::flush;
+      if (!std::cout) {
+        std::cerr << "error: cannot write the report to standard output\n";
+        return kExitOutputError;
+      }
       return 0;
     }
     return run_case(case_path, output_dir, threads, quiet, verbose);
