@@ -1,10 +1,14 @@
 // strandfem: command-line front end (run a case, or print its model sizes and analytic references).
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <cstdlib>
 #include <cstdio>
 #include <iostream>
+#include <new>
+#include <omp.h>
 
 #include "strandfem/io/case_file.hpp"
+#include "strandfem/io/output_file.hpp"
 #include "strandfem/io/result_writer.hpp"
 #include "strandfem/post/model_report.hpp"
 #include "strandfem/solver/static_analysis.hpp"
@@ -15,44 +19,83 @@
 
 namespace {
 
+// Exit codes (README): 0 done, 1 internal error (a bug), 2 bad input, 3 not converged, 4 results not written.
+constexpr int kExitInternalError = 1;
 constexpr int kExitBadInput = 2;
 constexpr int kExitNotConverged = 3;
+constexpr int kExitOutputError = 4;
 
 nlohmann::json build_info() {
   return {{"git_revision", STRANDFEM_GIT_REVISION}, {"compiler", __VERSION__}, {"version", "0.1.0"}};
 }
 
-int run_case(const std::string& case_path, const std::string& output_dir, int threads, bool quiet, bool verbose) {
+// Threads for element evaluation: -t over solver.threads, 0 meaning OpenMP's default. More than the machine's
+// processors only contend (and thousands fail to start): such a count is capped there, with a warning.
+int resolve_threads(int asked, const std::string& source) {
+  const int processors = omp_get_num_procs();
+  if (asked > processors) {
+    std::cerr << "warning: " << source << " asks for " << asked << " threads; this machine has " << processors
+              << " processors, using " << processors << "\n";
+    return processors;
+  }
+  return asked > 0 ? asked : omp_get_max_threads();
+}
+
+// --plots: the figures of a results folder, drawn by the plotting scripts of the source tree (Debian's /usr/bin/python3 with
+// matplotlib). A missing or failing plotter is a warning: the results themselves are complete.
+void draw_plots(const std::string& output_dir) {
+  const std::string command = std::string("/usr/bin/python3 '") + STRANDFEM_SCRIPTS_DIR + "/plot_bending.py' '" +
+                              output_dir + "' > /dev/null";
+  if (std::system(command.c_str()) != 0) std::cerr << "warning: plotting failed (" << command << ")\n";
+}
+
+int run_case(const std::string& case_path, const std::string& output_dir, int threads, bool quiet, bool verbose,
+             bool plots) {
   strandfem::CaseDefinition c = strandfem::load_case(case_path);
-  if (threads > 0) c.model.options.threads = threads;
   for (const auto& w : c.warnings) std::cerr << "warning: " << w << "\n";
+  const bool from_command_line = threads > 0;
+  c.model.options.threads = resolve_threads(from_command_line ? threads : c.model.options.threads,
+                                            from_command_line ? "-t" : "solver.threads");
+  c.resolved["solver"]["threads"] = c.model.options.threads;  // the count used, whatever asked for it
   nlohmann::json info = strandfem::model_report(c);
   info["build"] = build_info();
+  info["threads"] = c.model.options.threads;
   const auto start = std::chrono::steady_clock::now();
-  strandfem::StaticAnalysis analysis(c.model);
-  strandfem::ResultWriter writer(output_dir, c);
-  const int step_count = static_cast<int>(c.model.steps.size());
-  auto on_increment = [&](const strandfem::IncrementReport& r) {
-    writer.on_increment(analysis, r);
-    if (!quiet)
-      std::cerr << "step " << r.origin.step + 1 << "/" << step_count << " '" << r.step_name << "' increment " << r.increment
-                << " (fraction " << r.step_fraction << "): " << r.iterations << " iterations, residual "
-                << r.residual_norm << "\n";
-  };
-  auto on_progress = [&](const strandfem::IncrementReport& r) {
-    std::cerr << "  step " << r.step + 1 << " increment " << r.increment << " iteration " << r.iterations
-              << ": relative residual " << r.residual_norm << "\n";
-  };
-  const strandfem::AnalysisStatus status =
-      verbose ? analysis.run(on_increment, on_progress) : analysis.run(on_increment);
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  writer.finish(analysis, status, wall, info);
-  if (!status.converged) {
-    std::cerr << "error: " << status.message << "\nconverged results so far are in " << output_dir << "\n";
-    return kExitNotConverged;
+  // The folder is taken over (old results removed, summary.json "running", history.csv header) before the
+  // analysis is set up, so that a run stopped at any point leaves only its own files.
+  strandfem::ResultWriter writer(output_dir, c, info);
+  try {
+    strandfem::StaticAnalysis analysis(c.model);
+    const int step_count = static_cast<int>(c.model.steps.size());
+    auto on_increment = [&](const strandfem::IncrementReport& r) {
+      writer.on_increment(analysis, r);
+      if (!quiet)
+        std::cerr << "step " << r.origin.step + 1 << "/" << step_count << " '" << r.step_name << "' increment " << r.increment
+                  << " (fraction " << r.step_fraction << "): " << r.iterations << " iterations, residual "
+                  << r.residual_norm << "\n";
+    };
+    auto on_progress = [&](const strandfem::IncrementReport& r) {
+      std::cerr << "  step " << r.step + 1 << " increment " << r.increment << " iteration " << r.iterations
+                << ": relative residual " << r.residual_norm << "\n";
+    };
+    const strandfem::AnalysisStatus status =
+        verbose ? analysis.run(on_increment, on_progress) : analysis.run(on_increment);
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    writer.finish(analysis, status, wall);
+    if (plots) draw_plots(output_dir);
+    if (!status.converged) {
+      std::cerr << "error: " << status.message << "\nconverged results so far are in " << output_dir << "\n";
+      return kExitNotConverged;
+    }
+    if (!quiet) std::cerr << "done in " << wall << " s; results in " << output_dir << "\n";
+    return 0;
+  } catch (const strandfem::OutputError& e) {
+    writer.record_failure("output_error", e.what());
+    throw;
+  } catch (const std::exception& e) {
+    writer.record_failure("failed", e.what());
+    throw;
   }
-  if (!quiet) std::cerr << "done in " << wall << " s; results in " << output_dir << "\n";
-  return 0;
 }
 
 }  // namespace
@@ -62,13 +105,14 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   std::string case_path, output_dir = "results";
   int threads = 0;
-  bool quiet = false, verbose = false;
+  bool quiet = false, verbose = false, plots = false;
   auto* run = app.add_subcommand("run", "Solve a case and write its results folder");
   run->add_option("case", case_path, "Case file (YAML)")->required();
   run->add_option("-o,--output", output_dir, "Results folder (created if needed)");
   run->add_option("-t,--threads", threads, "OpenMP threads for element evaluation (0: default)")->check(CLI::NonNegativeNumber);
   run->add_flag("-q,--quiet", quiet, "No progress lines");
   run->add_flag("-v,--verbose", verbose, "A progress line per Newton iteration");
+  run->add_flag("--plots", plots, "Draw the results' figures (PNG, into the results folder; needs python3-matplotlib)");
   auto* info = app.add_subcommand("info", "Print model sizes and analytic references as JSON, without solving");
   info->add_option("case", case_path, "Case file (YAML)")->required();
   try {
@@ -81,18 +125,28 @@ int main(int argc, char** argv) {
     if (info->parsed()) {
       const strandfem::CaseDefinition c = strandfem::load_case(case_path);
       for (const auto& w : c.warnings) std::cerr << "warning: " << w << "\n";
-      std::cout << strandfem::model_report(c).dump(2) << "\n";
+      std::cout << strandfem::model_report(c).dump(2) << "\n" << std::flush;
+      if (!std::cout) {
+        std::cerr << "error: cannot write the report to standard output\n";
+        return kExitOutputError;
+      }
       return 0;
     }
-    return run_case(case_path, output_dir, threads, quiet, verbose);
+    return run_case(case_path, output_dir, threads, quiet, verbose, plots);
   } catch (const strandfem::CaseError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return kExitBadInput;
   } catch (const std::invalid_argument& e) {
     std::cerr << "error: " << e.what() << "\n";
     return kExitBadInput;
-  } catch (const std::exception& e) {
+  } catch (const strandfem::OutputError& e) {
     std::cerr << "error: " << e.what() << "\n";
-    return 1;
+    return kExitOutputError;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "error: out of memory\n";
+    return kExitInternalError;
+  } catch (const std::exception& e) {
+    std::cerr << "internal error: " << e.what() << "\n";
+    return kExitInternalError;
   }
 }

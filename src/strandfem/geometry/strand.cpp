@@ -1,5 +1,6 @@
 #include "strandfem/geometry/strand.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -51,14 +52,31 @@ CenterlinePoint helix_point(double radius, double lay_angle, int direction, doub
 
 namespace {
 
+// Smallest angular separation at z = 0 between two wires of the layer: 2 pi / n when evenly spaced, otherwise
+// the smallest gap between neighbours of the sorted start angles (wires of a layer are parallel helices, so their
+// separation stays the same along z).
+double smallest_angular_spacing(const LayerSpec& spec) {
+  const double turn = 2.0 * std::numbers::pi;
+  if (spec.wire_start_angles.empty()) return turn / spec.wires;
+  std::vector<double> angles;
+  for (const double a : spec.wire_start_angles) angles.push_back(a - turn * std::floor(a / turn));
+  std::sort(angles.begin(), angles.end());
+  double smallest = angles.front() + turn - angles.back();
+  for (std::size_t i = 1; i < angles.size(); ++i) smallest = std::min(smallest, angles[i] - angles[i - 1]);
+  return smallest;
+}
+
 // Smallest centerline distance between neighbouring wires of a layer laid at radius R, minus a diameter.
 double clearance_at_radius(const LayerSpec& spec, double R) {
   const double k = spec.lay_direction * std::tan(spec.lay_angle) / R;
-  const double phi0 = 2.0 * std::numbers::pi / spec.wires;
+  const double phi0 = smallest_angular_spacing(spec);
   // Squared distance from wire 0 at z = 0 to wire 1 at height z.
   auto distance2 = [&](double z) { return 2.0 * R * R * (1.0 - std::cos(phi0 + k * z)) + z * z; };
-  // The minimum lies between z = 0 and the height where wire 1 passes over wire 0's start angle.
-  const double z_end = std::abs(k) > 1e-12 ? -phi0 / k : 0.0;
+  // The minimum lies between z = 0 and the height where wire 1 passes over wire 0's start angle, and within
+  // |z| <= the distance at z = 0 (the distance is at least |z|): nearly straight wires would otherwise send the
+  // search to heights where z^2 overflows.
+  const double reach = std::sqrt(distance2(0.0));
+  const double z_end = std::abs(k) > 1e-12 ? std::clamp(-phi0 / k, -reach, reach) : 0.0;
   double a = std::min(0.0, z_end), b = std::max(0.0, z_end);
   double best = a, best_value = distance2(a);
   const int samples = 400;
@@ -88,8 +106,13 @@ double touching_layer_radius(const StrandSpec& strand, int layer) {
   const LayerSpec& spec = strand.layers[layer];
   if (layer == 0 || spec.wires < 2) return std::numeric_limits<double>::quiet_NaN();
   // Clearance grows with the radius: bisect between a radius with overlap and one with a gap.
+  // Wires at the same start angle overlap at any radius.
+  if (!(smallest_angular_spacing(spec) > 0)) return std::numeric_limits<double>::quiet_NaN();
   double lo = 0.5 * spec.wire_diameter, hi = layer_radius(strand, layer);
-  while (clearance_at_radius(spec, hi) < 0) hi *= 1.5;
+  for (int grow = 0; clearance_at_radius(spec, hi) < 0; ++grow) {
+    if (grow == 200) return std::numeric_limits<double>::quiet_NaN();
+    hi *= 1.5;
+  }
   for (int it = 0; it < 80; ++it) {
     const double mid = 0.5 * (lo + hi);
     (clearance_at_radius(spec, mid) < 0 ? lo : hi) = mid;

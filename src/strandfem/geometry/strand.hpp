@@ -46,7 +46,8 @@ CenterlinePoint wire_centerline(const StrandSpec& strand, int layer, int wire_in
 CenterlinePoint helix_point(double radius, double lay_angle, int direction, double start_angle, double z);
 
 // Smallest distance between the centerlines of two neighbouring wires of a layer minus one wire diameter:
-// negative values are overlaps of the nominal geometry. NaN for the core and single-wire layers.
+// negative values are overlaps of the nominal geometry. Neighbours are those closest in start angle (evenly
+// spaced, or per-wire start_angles). NaN for the core and single-wire layers.
 double lateral_clearance(const StrandSpec& strand, int layer);
 
 // Layer radius at which neighbouring wires of the layer would just touch (exact helix distance). Its

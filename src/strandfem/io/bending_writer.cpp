@@ -17,8 +17,8 @@ BendingWriter::BendingWriter(const std::filesystem::path& directory, const CaseD
   ei_max_ = bounds.ei_max;
   ei_min_ = bounds.ei_min;
   curves_.open(directory / "deflection_curves.csv");
-  if (!curves_) throw std::runtime_error("cannot write " + (directory / "deflection_curves.csv").string());
-  curves_ << "cycle,transverse_load_N,axial_force_N,z_mm,deflection_mm,eq32_ei_max_mm,eq32_ei_min_mm\n";
+  curves_.stream() << "cycle,transverse_load_N,axial_force_N,z_mm,deflection_mm,eq32_ei_max_mm,eq32_ei_min_mm\n";
+  curves_.end_row();
 }
 
 void BendingWriter::on_increment(const StaticAnalysis& analysis, const IncrementReport& report, double axial_force,
@@ -34,18 +34,19 @@ void BendingWriter::on_increment(const StaticAnalysis& analysis, const Increment
   for (const int node : model.mesh.wires[0].nodes) {
     const Vec3 u = analysis.state()[node].position - model.mesh.nodes[node].reference.position;
     const double z = model.mesh.nodes[node].reference.position.z(), x = std::min(z, length - z);
-    curves_ << fmt::format("{},{:.8g},{:.8g},{:.6f},{:.8g},{:.8g},{:.8g}\n", report.origin.cycle, transverse_load, axial_force, z,
+    curves_.stream() << fmt::format("{},{:.8g},{:.8g},{:.6f},{:.8g},{:.8g},{:.8g}\n", report.origin.cycle, transverse_load, axial_force, z,
                            std::hypot(u.x(), u.y()),
                            tensioned_beam_deflection(transverse_load, axial_force, ei_max_, length, x),
                            tensioned_beam_deflection(transverse_load, axial_force, ei_min_, length, x));
   }
-  curves_.flush();
+  curves_.end_row();
 }
 
 nlohmann::json BendingWriter::finish() {
   if (!active_) return nullptr;
   const std::vector<HysteresisLoop> loops = hysteresis_loops(history_);
-  std::ofstream out(directory_ / "loops.csv");
+  WholeFile file(directory_ / "loops.csv");
+  std::ostream& out = file.stream();
   out << "cycle,area_Nmm,peak_load_N,peak_deflection_mm,start_deflection_mm,end_deflection_mm,secant_stiffness_N_per_mm,"
          "secant_ei_Nm2,loading_tangent_N_per_mm,unloading_tangent_N_per_mm,eq31_ei_max_mm,eq31_ei_min_mm,steady\n";
   nlohmann::json rows = nlohmann::json::array();
@@ -65,6 +66,7 @@ nlohmann::json BendingWriter::finish() {
                     {"peak_deflection_mm", l.peak_deflection}, {"secant_ei_Nm2", 1e-6 * secant_ei},
                     {"eq31_ei_max_mm", y_max}, {"eq31_ei_min_mm", y_min}, {"steady", steady}});
   }
+  file.commit();
   return {{"ei_max_Nm2", 1e-6 * ei_max_}, {"ei_min_Nm2", 1e-6 * ei_min_}, {"loops", rows}};
 }
 

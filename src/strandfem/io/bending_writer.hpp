@@ -3,11 +3,11 @@
 // hysteresis loop), and summarizes them for summary.json.
 #pragma once
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <vector>
 
 #include "strandfem/io/case_file.hpp"
+#include "strandfem/io/output_file.hpp"
 #include "strandfem/post/bending.hpp"
 #include "strandfem/solver/static_analysis.hpp"
 
@@ -29,7 +29,7 @@ class BendingWriter {
   const CaseDefinition& case_;
   bool active_ = false;
   double ei_max_ = 0, ei_min_ = 0;   // N mm^2 (eqs. 1.1, 1.2)
-  std::ofstream curves_;
+  AppendedFile curves_;
   std::vector<LoadDeflectionPoint> history_;
   std::vector<double> peak_tension_;  // axial force at each cycle's peak
 };

@@ -1,10 +1,13 @@
 #include "strandfem/io/case_file.hpp"
 #include "strandfem/io/contact_keys.hpp"
+#include "strandfem/io/yaml_document.hpp"
 
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <sstream>
+#include <unordered_set>
 
 #include "strandfem/geometry/beam_line.hpp"
 
@@ -12,6 +15,14 @@ namespace strandfem {
 namespace {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
+// Integer ranges (beside the model-size limit of the mesher): a layer of real strands has a few dozen wires;
+// a cut-back halves the increment, and 30 of them reach 1e-9 of it; the load-factor grid of a step is resolved
+// to 1e-12, far below 1 / kMaxIncrementsPerStep.
+constexpr int kMaxWiresPerLayer = 1000;
+constexpr int kMaxElementsPerLine = (kMaxModelNodes - 1) / 2;
+constexpr int kMaxIncrementsPerStep = 1000000;
+constexpr int kMaxCycles = 10000;
+constexpr int kMaxThreadsAsked = std::numeric_limits<int>::max();  // the program caps it at the machine's count
 const char* const kComponentNames[6] = {"ux", "uy", "uz", "rx", "ry", "rz"};
 
 std::string at(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
@@ -83,6 +94,16 @@ class CaseParser {
     return it->second;
   }
 
+  // Elements from `first_element` on must be long enough for their geometry to survive round-off.
+  void check_resolution(std::size_t first_element, const YAML::Node& key_node, const std::string& key_path) {
+    const ElementResolution r = element_resolution(out_.model.mesh, first_element);
+    if (r.resolvable()) return;
+    std::ostringstream msg;
+    msg << "elements " << r.shortest << " mm long: below " << kMinElementLength << " mm or " << kMinElementLengthRatio
+        << " of the coordinates' magnitude (" << r.coordinate_scale << " mm), round-off would swamp their geometry";
+    reader_.fail(key_node, key_path, msg.str());
+  }
+
   void parse_strand(const YAML::Node& node, const YAML::Node& mesh) {
     reader_.check_keys(node, "strand", {"length", "layers", "ends"});
     StrandSpec spec;
@@ -96,7 +117,7 @@ class CaseParser {
       const std::string path = at("strand.layers", i);
       reader_.check_keys(l, path, {"wires", "diameter", "material", "lay_angle", "lay_direction", "start_angle", "start_angles"});
       LayerSpec layer;
-      layer.wires = reader_.integer(reader_.require(l, path, "wires"), path + ".wires", 1);
+      layer.wires = reader_.integer(reader_.require(l, path, "wires"), path + ".wires", 1, kMaxWiresPerLayer);
       layer.wire_diameter = reader_.positive(reader_.require(l, path, "diameter"), path + ".diameter", "mm");
       layer.material = reader_.text(reader_.require(l, path, "material"), path + ".material");
       material(l["material"], path + ".material");
@@ -126,7 +147,8 @@ class CaseParser {
       std::ostringstream msg;
       msg << "layer " << i << ": neighbouring wires overlap by " << -clearance << " mm at the nominal radius of eq. 2.1";
       if (-clearance > 0.25 * radius)
-        reader_.fail(layers[i], at("strand.layers", i), msg.str() + ", more than 25 % of the wire radius: check wires, diameter and lay_angle");
+        reader_.fail(layers[i], at("strand.layers", i), msg.str() + ", more than 25 % of the wire radius: check wires, diameter and lay_angle" +
+                                                           (spec.layers[i].wire_start_angles.empty() ? "" : " (and start_angles: the closest two wires count)"));
       out_.warnings.push_back(msg.str());
     }
     out_.end_type = node["ends"] ? reader_.choice(node["ends"], "strand.ends", {"fixed", "free"}) : "fixed";
@@ -135,10 +157,20 @@ class CaseParser {
       if (mesh["element_length"] && mesh["elements_per_wire"])
         reader_.fail(mesh, "mesh", "give either element_length or elements_per_wire, not both");
       if (mesh["element_length"]) out_.mesh_spec.element_length = reader_.positive(mesh["element_length"], "mesh.element_length", "mm");
-      if (mesh["elements_per_wire"]) out_.mesh_spec.elements_per_wire = reader_.integer(mesh["elements_per_wire"], "mesh.elements_per_wire", 1);
+      if (mesh["elements_per_wire"]) out_.mesh_spec.elements_per_wire = reader_.integer(mesh["elements_per_wire"], "mesh.elements_per_wire", 1, kMaxElementsPerLine);
     }
+    // The mesh's size and element length, checked before anything is allocated, against the key that set them.
+    const char* mesh_key = mesh && mesh["element_length"] ? "element_length" : mesh && mesh["elements_per_wire"] ? "elements_per_wire" : nullptr;
+    const YAML::Node mesh_node = mesh_key ? mesh[mesh_key] : node["length"];
+    const std::string mesh_path = mesh_key ? std::string("mesh.") + mesh_key : "strand.length";
+    const std::int64_t node_count = strand_node_count(spec, out_.mesh_spec);
+    if (node_count > kMaxModelNodes)
+      reader_.fail(mesh_node, mesh_path, "the strand mesh would have " + std::to_string(node_count) + " nodes (or more), beyond the model-size limit of " +
+                                             std::to_string(kMaxModelNodes) + " nodes (" + std::to_string(6 * kMaxModelNodes) + " DOFs)" +
+                                             (mesh_key ? "" : " with the default 10 mm elements: set mesh.element_length"));
     out_.model.mesh = mesh_strand(spec, out_.mesh_spec);
     Mesh& m = out_.model.mesh;
+    check_resolution(0, mesh_node, mesh_path);
     const MeshWire& core = m.wires[0];
     out_.start_node = core.nodes.front();
     out_.end_node = core.nodes.back();
@@ -156,6 +188,9 @@ class CaseParser {
     Support clamp{out_.start_node, {true, true, true, true, true, true}};
     Support far{out_.end_node, {true, true, false, true, true, out_.end_type == "fixed"}};
     out_.model.supports = {clamp, far};
+    for (const Support& s : out_.model.supports)
+      for (int c = 0; c < 6; ++c)
+        if (s.fixed[c]) dof_uses_[{s.node, c}].support = s.node == out_.start_node ? "the clamp at z = 0" : "strand.ends";
     out_.strand = spec;
   }
 
@@ -184,13 +219,18 @@ class CaseParser {
         geometry.torsion_constant = reader_.positive(reader_.require(s, sp, "torsion_constant"), sp + ".torsion_constant", "mm^4");
         geometry.shear_factor = reader_.positive(reader_.require(s, sp, "shear_factor"), sp + ".shear_factor", "-");
       }
-      line.elements = reader_.integer(reader_.require(b, path, "elements"), path + ".elements", 1);
+      line.elements = reader_.integer(reader_.require(b, path, "elements"), path + ".elements", 1, kMaxElementsPerLine);
       parse_shape(reader_.require(b, path, "shape"), path + ".shape", line);
       Mesh& m = out_.model.mesh;
       if (mat.plasticity && !s["diameter"])
         reader_.fail(s, path + ".section", "material '" + mat.name + "' has plasticity: give the wire 'diameter' (fibre section)");
+      if (static_cast<std::int64_t>(m.nodes.size()) + 2 * static_cast<std::int64_t>(line.elements) + 1 > kMaxModelNodes)
+        reader_.fail(b["elements"], path + ".elements", "the beam lines would have more than the model-size limit of " +
+                                                            std::to_string(kMaxModelNodes) + " nodes (" + std::to_string(6 * kMaxModelNodes) + " DOFs)");
       m.sections.push_back(make_section(geometry, mat));
+      const std::size_t first_element = m.elements.size();
       add_beam_line(m, line, static_cast<int>(m.sections.size()) - 1);
+      check_resolution(first_element, b["elements"], path + ".elements");
     }
     const MeshWire& first = out_.model.mesh.wires[0];
     out_.start_node = first.nodes.front();
@@ -226,8 +266,7 @@ class CaseParser {
           slaves.push_back(node_at(links[k], at(path + ".links", k)));
         }
         for (const int slave : slaves) {
-          for (const RigidTie& t : out_.model.ties)
-            if (t.slave == slave) reader_.fail(links[k], at(path + ".links", k), "node already linked to a hub");
+          if (!hub_linked_.insert(slave).second) reader_.fail(links[k], at(path + ".links", k), "node already linked to a hub");
           out_.model.ties.push_back(make_rigid_tie(slave, hub_node, m.nodes[slave].reference, m.nodes[hub_node].reference));
         }
       }
@@ -275,6 +314,7 @@ class CaseParser {
     const Mesh& m = out_.model.mesh;
     if (out_.strand) {
       reader_.check_keys(n, path, {"core", "core_z"});
+      if (n["core"] && n["core_z"]) reader_.fail(n, path, "give core or core_z, not both");
       const MeshWire& core = m.wires[0];
       if (n["core"]) return reader_.choice(n["core"], path + ".core", {"start", "end"}) == "start" ? core.nodes.front() : core.nodes.back();
       const double z = reader_.number(reader_.require(n, path, "core_z"), path + ".core_z");
@@ -292,10 +332,11 @@ class CaseParser {
       return hubs_.at(hub);
     }
     const std::string name = reader_.text(reader_.require(n, path, "beam"), path + ".beam");
+    if (n["node"] && n["point"]) reader_.fail(n, path, "give point or node, not both");
     for (const MeshWire& w : m.wires) {
       if (w.name != name) continue;
       if (n["node"]) {
-        const int k = reader_.integer(n["node"], path + ".node", 0);
+        const int k = reader_.integer(n["node"], path + ".node", 0, 2 * kMaxElementsPerLine);
         if (k >= static_cast<int>(w.nodes.size())) reader_.fail(n["node"], path + ".node", "beyond the line's last node " + std::to_string(w.nodes.size() - 1));
         return w.nodes[k];
       }
@@ -320,8 +361,36 @@ class CaseParser {
           for (int j = 0; j < 6; ++j) if (c == kComponentNames[j]) s.fixed[j] = true;
         }
       } else reader_.fail(fix, path + ".fix", "expected 'all' or a list of ux, uy, uz, rx, ry, rz");
+      for (int c = 0; c < 6; ++c)
+        if (s.fixed[c] && dof_uses_[{s.node, c}].support.empty()) dof_uses_[{s.node, c}].support = path;
       out_.model.supports.push_back(s);
     }
+  }
+
+  // Adds an action to a step unless it contradicts another on the same DOF: two in one step (one would silently
+  // win), or a non-zero force where a support or a motion holds the DOF (a motion holds it in every step), which
+  // would never act. Motions on supported DOFs are how a support is moved; zero forces release earlier ones.
+  void add_action(LoadStep& step, int step_index, const NodalAction& action, const YAML::Node& where, const std::string& path) {
+    DofUse& use = dof_uses_[{action.node, action.component}];
+    const std::string dof = std::string(kComponentNames[action.component]) + " of node " + std::to_string(action.node);
+    if (use.last_step == step_index)
+      reader_.fail(where, path, dof + " is driven twice in this step (also by " + use.last_path + "): give one action per DOF");
+    if (action.kind == NodalAction::kForce && action.value != 0) {
+      if (!use.support.empty()) reader_.fail(where, path, dof + " is held by " + use.support + ": a load on it would never act");
+      if (!use.motion.empty())
+        reader_.fail(where, path, dof + " is driven by a motion in another step (" + use.motion +
+                                      "), which holds it in every step: a load on it would never act");
+      if (use.force.empty()) use.force = path;
+    }
+    if (action.kind == NodalAction::kMotion) {
+      if (!use.force.empty())
+        reader_.fail(where, path, dof + " is loaded in another step (" + use.force +
+                                      "): a motion would hold it in every step, and that load would never act");
+      if (use.motion.empty()) use.motion = path;
+    }
+    use.last_step = step_index;
+    use.last_path = path;
+    step.actions.push_back(action);
   }
 
   void parse_steps(const YAML::Node& node) {
@@ -335,27 +404,30 @@ class CaseParser {
         reader_.check_keys(s, path, {"name", "increments", "cycles", "forces", "motions"});
       LoadStep step;
       step.name = s["name"] ? reader_.text(s["name"], path + ".name") : "step" + std::to_string(i + 1);
-      step.increments = reader_.integer(reader_.require(s, path, "increments"), path + ".increments", 1);
-      if (s["cycles"]) step.cycles = reader_.integer(s["cycles"], path + ".cycles", 1);
-      if (out_.strand) parse_strand_actions(s, path, step);
-      if (s["forces"]) parse_forces(s["forces"], path + ".forces", step);
-      if (s["motions"]) parse_motions(s["motions"], path + ".motions", step);
+      step.increments = reader_.integer(reader_.require(s, path, "increments"), path + ".increments", 1, kMaxIncrementsPerStep);
+      if (s["cycles"]) step.cycles = reader_.integer(s["cycles"], path + ".cycles", 1, kMaxCycles);
+      const int index = static_cast<int>(i);
+      if (out_.strand) parse_strand_actions(s, path, index, step);
+      if (s["forces"]) parse_forces(s["forces"], path + ".forces", index, step);
+      if (s["motions"]) parse_motions(s["motions"], path + ".motions", index, step);
       out_.model.steps.push_back(step);
     }
   }
 
-  void parse_strand_actions(const YAML::Node& s, const std::string& path, LoadStep& step) {
+  void parse_strand_actions(const YAML::Node& s, const std::string& path, int index, LoadStep& step) {
     const int end = out_.end_node;
     if (s["axial_strain"] && s["axial_force"]) reader_.fail(s, path, "give axial_strain or axial_force, not both");
     if (s["torque"] && s["twist"]) reader_.fail(s, path, "give torque or twist, not both");
     if (s["axial_strain"])
-      step.actions.push_back({NodalAction::kMotion, end, kUz, reader_.number(s["axial_strain"], path + ".axial_strain") * out_.axial_length});
+      add_action(step, index, {NodalAction::kMotion, end, kUz, reader_.number(s["axial_strain"], path + ".axial_strain") * out_.axial_length},
+                 s["axial_strain"], path + ".axial_strain");
     if (s["axial_force"])
-      step.actions.push_back({NodalAction::kForce, end, kUz, reader_.number(s["axial_force"], path + ".axial_force")});
+      add_action(step, index, {NodalAction::kForce, end, kUz, reader_.number(s["axial_force"], path + ".axial_force")}, s["axial_force"],
+                 path + ".axial_force");
     if (s["torque"] || s["twist"]) {
       if (out_.end_type == "fixed") reader_.fail(s, path, "torque and twist need strand.ends: free (fixed ends hold the rotation)");
-      if (s["torque"]) step.actions.push_back({NodalAction::kForce, end, kRz, reader_.number(s["torque"], path + ".torque")});
-      else step.actions.push_back({NodalAction::kMotion, end, kRz, reader_.number(s["twist"], path + ".twist") * kDegree});
+      if (s["torque"]) add_action(step, index, {NodalAction::kForce, end, kRz, reader_.number(s["torque"], path + ".torque")}, s["torque"], path + ".torque");
+      else add_action(step, index, {NodalAction::kMotion, end, kRz, reader_.number(s["twist"], path + ".twist") * kDegree}, s["twist"], path + ".twist");
     }
     if (s["transverse_force"]) {
       const YAML::Node t = s["transverse_force"];
@@ -378,7 +450,7 @@ class CaseParser {
         direction.normalize();
       }
       for (int c = 0; c < 2; ++c)
-        if (direction[c] != 0) step.actions.push_back({NodalAction::kForce, node, c, value * direction[c]});
+        if (direction[c] != 0) add_action(step, index, {NodalAction::kForce, node, c, value * direction[c]}, t, tp);
     }
   }
 
@@ -396,7 +468,7 @@ class CaseParser {
     }
   }
 
-  void parse_forces(const YAML::Node& node, const std::string& path, LoadStep& step) {
+  void parse_forces(const YAML::Node& node, const std::string& path, int index, LoadStep& step) {
     if (!node.IsSequence()) reader_.fail(node, path, "expected a list of {at, force, moment}");
     for (std::size_t i = 0; i < node.size(); ++i) {
       const std::string p = at(path, i);
@@ -407,21 +479,21 @@ class CaseParser {
         if (!node[i][key]) continue;
         const auto v = reader_.numbers(node[i][key], p + "." + key, 3);
         const int offset = std::string(key) == "force" ? 0 : 3;
-        for (int c = 0; c < 3; ++c) step.actions.push_back({NodalAction::kForce, n, offset + c, v[c]});
+        for (int c = 0; c < 3; ++c) add_action(step, index, {NodalAction::kForce, n, offset + c, v[c]}, node[i][key], p + "." + key);
       }
     }
   }
 
-  void parse_motions(const YAML::Node& node, const std::string& path, LoadStep& step) {
+  void parse_motions(const YAML::Node& node, const std::string& path, int index, LoadStep& step) {
     if (!node.IsSequence()) reader_.fail(node, path, "expected a list of {at, ux.., rz (deg)}");
     for (std::size_t i = 0; i < node.size(); ++i) {
       const std::string p = at(path, i);
       reader_.check_keys(node[i], p, {"at", "ux", "uy", "uz", "rx", "ry", "rz"});
       const int n = node_at(reader_.require(node[i], p, "at"), p + ".at");
       for (int c = 0; c < 6; ++c)
-        if (node[i][kComponentNames[c]])
-          step.actions.push_back({NodalAction::kMotion, n, c,
-                                  reader_.number(node[i][kComponentNames[c]], p + "." + kComponentNames[c]) * (c >= 3 ? kDegree : 1.0)});
+        if (const YAML::Node v = node[i][kComponentNames[c]])
+          add_action(step, index, {NodalAction::kMotion, n, c, reader_.number(v, p + "." + kComponentNames[c]) * (c >= 3 ? kDegree : 1.0)}, v,
+                     p + "." + kComponentNames[c]);
     }
   }
 
@@ -433,12 +505,12 @@ class CaseParser {
     if (node["force_tolerance"]) o.force_tolerance = reader_.positive(node["force_tolerance"], "solver.force_tolerance", "-");
     if (node["moment_tolerance"]) o.moment_tolerance = reader_.positive(node["moment_tolerance"], "solver.moment_tolerance", "-");
     if (node["displacement_tolerance"]) o.displacement_tolerance = reader_.positive(node["displacement_tolerance"], "solver.displacement_tolerance", "-");
-    if (node["max_iterations"]) o.max_iterations = reader_.integer(node["max_iterations"], "solver.max_iterations", 1);
-    if (node["max_cutbacks"]) o.max_cutbacks = reader_.integer(node["max_cutbacks"], "solver.max_cutbacks", 0);
-    if (node["line_search_cuts"]) o.line_search_cuts = reader_.integer(node["line_search_cuts"], "solver.line_search_cuts", 0);
+    if (node["max_iterations"]) o.max_iterations = reader_.integer(node["max_iterations"], "solver.max_iterations", 1, 1000);
+    if (node["max_cutbacks"]) o.max_cutbacks = reader_.integer(node["max_cutbacks"], "solver.max_cutbacks", 0, 30);
+    if (node["line_search_cuts"]) o.line_search_cuts = reader_.integer(node["line_search_cuts"], "solver.line_search_cuts", 0, 20);
     if (node["linear_solver"]) o.linear_solver = reader_.choice(node["linear_solver"], "solver.linear_solver", {"mumps", "umfpack"});
-    if (node["threads"]) o.threads = reader_.integer(node["threads"], "solver.threads", 0);
-    if (node["krylov_iterations"]) o.krylov_iterations = reader_.integer(node["krylov_iterations"], "solver.krylov_iterations", 0);
+    if (node["threads"]) o.threads = reader_.integer(node["threads"], "solver.threads", 0, kMaxThreadsAsked);
+    if (node["krylov_iterations"]) o.krylov_iterations = reader_.integer(node["krylov_iterations"], "solver.krylov_iterations", 0, 200);
     if (node["krylov_tolerance"]) o.krylov_tolerance = reader_.positive(node["krylov_tolerance"], "solver.krylov_tolerance", "-");
     if (node["extrapolate"]) o.extrapolate = reader_.boolean(node["extrapolate"], "solver.extrapolate");
   }
@@ -448,10 +520,10 @@ class CaseParser {
     if (node["wires"]) out_.output.wires = reader_.boolean(node["wires"], "output.wires");
     if (node["contacts"]) out_.output.contacts = reader_.boolean(node["contacts"], "output.contacts");
     if (node["contacts_every"]) {
-      out_.output.contacts_every = reader_.integer(node["contacts_every"], "output.contacts_every", 1);
+      out_.output.contacts_every = reader_.integer(node["contacts_every"], "output.contacts_every", 1, std::numeric_limits<int>::max());
       out_.output.contacts_every_set = true;
     }
-    if (node["every"]) out_.output.every = reader_.integer(node["every"], "output.every", 1);
+    if (node["every"]) out_.output.every = reader_.integer(node["every"], "output.every", 1, std::numeric_limits<int>::max());
     if (node["vtu"]) out_.output.vtu = reader_.boolean(node["vtu"], "output.vtu");
     if (node["monitor"]) out_.monitor_node = node_at(node["monitor"], "output.monitor");
   }
@@ -460,24 +532,39 @@ class CaseParser {
   CaseDefinition& out_;
   std::map<std::string, Material> materials_;
   std::map<std::string, int> hubs_;
+  std::unordered_set<int> hub_linked_;  // nodes already tied to a hub (checked per link in O(1))
+  // The keys that hold or drive each DOF (first support, motion, non-zero force; the last step that acted on it):
+  // contradictions name both keys.
+  struct DofUse {
+    std::string support, motion, force, last_path;
+    int last_step = -1;
+  };
+  std::map<std::pair<int, int>, DofUse> dof_uses_;
 };
 
 }  // namespace
 
 CaseDefinition load_case(const std::string& path) {
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::BadFile&) {
-    throw CaseError(path + ": cannot open the case file");
-  } catch (const YAML::Exception& e) {
-    throw CaseError(path + ": not valid YAML: " + e.what());
-  }
+  const YAML::Node root = load_yaml_document(path);
   if (!root.IsMap()) throw CaseError(path + ": expected a YAML mapping at the top level");
   CaseDefinition c;
   c.path = path;
-  CaseParser(path, c).parse(root);
+  try {
+    CaseParser(path, c).parse(root);
+  } catch (const YAML::Exception& e) {
+    // A node used as what it is not (a scalar indexed as a mapping...) that no check above caught: still bad input.
+    std::string where = path;
+    if (e.mark.line >= 0) where += ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1);
+    throw CaseError(where + ": " + e.msg);
+  } catch (const ModelSizeError& e) {
+    throw CaseError(path + ": " + e.what());
+  }
   c.model.build_elements();
+  try {
+    build_dof_map(c.model);  // supports or loads on tied nodes, doubly tied nodes: refused before any run starts
+  } catch (const std::invalid_argument& e) {
+    throw CaseError(path + ": " + e.what());
+  }
   std::stringstream yaml_text;
   yaml_text << root;
   c.resolved["case_file"] = path;

@@ -71,8 +71,7 @@ ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Nod
     if (c.line_contact_angle >= 90) reader.fail(node["line_contact_angle"], "contact.line_contact_angle", "expected an angle in (0, 90) degrees");
   }
   if (node["line_points"]) {
-    c.line_points = reader.integer(node["line_points"], "contact.line_points", 1);
-    if (c.line_points > 10) reader.fail(node["line_points"], "contact.line_points", "expected 1..10 Gauss points per element");
+    c.line_points = reader.integer(node["line_points"], "contact.line_points", 1, 10);  // Gauss points per element
   }
   if (node["touch_tolerance"]) {
     c.touch_tolerance = reader.non_negative(node["touch_tolerance"], "contact.touch_tolerance", "fraction of r_a + r_b");

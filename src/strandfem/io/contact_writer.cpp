@@ -14,10 +14,10 @@ ContactWriter::ContactWriter(std::filesystem::path directory, const CaseDefiniti
     : directory_(std::move(directory)), case_(c) {
   if (!active(c)) return;
   csv_.open(directory_ / "contacts.csv");
-  if (!csv_) throw std::runtime_error("cannot write " + (directory_ / "contacts.csv").string());
   // Line contacts carry forces per unit length (N/mm), point contacts forces (N): see force_unit.
-  csv_ << "step,increment,load_factor,kind,wire_a,wire_b,layer_a,layer_b,element_a,element_b,xi,eta,x_mm,y_mm,z_mm,"
+  csv_.stream() << "step,increment,load_factor,kind,wire_a,wire_b,layer_a,layer_b,element_a,element_b,xi,eta,x_mm,y_mm,z_mm,"
           "angle_deg,gap_mm,normal_force,q1,q2,force_unit,status,slip_mm,slip_since_reversal_mm\n";
+  csv_.end_row();
 }
 
 void ContactWriter::on_increment(const StaticAnalysis& analysis, const IncrementReport& report, int increment_count,
@@ -32,14 +32,14 @@ void ContactWriter::on_increment(const StaticAnalysis& analysis, const Increment
     const ContactResponse& r = contacts.responses()[i];
     if (r.status == ContactStatus::kOpen) continue;
     const Vec3& x = r.position;
-    csv_ << fmt::format("{},{},{:.8g},{},{},{},{},{},{},{},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.4f},{:.6e},{:.6e},{:.6e},{:.6e},{},{},{:.6e},{:.6e}\n",
+    csv_.stream() << fmt::format("{},{},{:.8g},{},{},{},{},{},{},{},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.4f},{:.6e},{:.6e},{:.6e},{:.6e},{},{},{:.6e},{:.6e}\n",
                         report.step + 1, report.increment, load_factor, to_string(p.kind), p.wire_a, p.wire_b,
                         model.mesh.wires[p.wire_a].layer, model.mesh.wires[p.wire_b].layer, p.element_a, r.element_b, r.xi,
                         r.eta, x.x(), x.y(), x.z(), std::atan2(x.y(), x.x()) * 180.0 / M_PI, r.gap, r.normal_force, r.q1,
                         r.q2, p.kind == ContactKind::kLine ? "N/mm" : "N", to_string(r.status), p.history.slip,
                         p.history.slip_since_reversal);
+    csv_.end_row();
   }
-  csv_.flush();
 }
 
 void ContactWriter::write_vtu(const StaticAnalysis& analysis, const std::string& name, double time) {
@@ -48,7 +48,8 @@ void ContactWriter::write_vtu(const StaticAnalysis& analysis, const std::string&
   std::vector<int> closed;
   for (std::size_t i = 0; i < contacts.points().size(); ++i)
     if (contacts.responses()[i].status != ContactStatus::kOpen) closed.push_back(static_cast<int>(i));
-  std::ofstream out(directory_ / name);
+  WholeFile file(directory_ / name);
+  std::ostream& out = file.stream();
   out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
       << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << closed.size() << "\" NumberOfCells=\"" << closed.size() << "\">\n"
       << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
@@ -77,11 +78,14 @@ void ContactWriter::write_vtu(const StaticAnalysis& analysis, const std::string&
   out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
   for (std::size_t i = 0; i < closed.size(); ++i) out << "1\n";  // VTK_VERTEX
   out << "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+  file.commit();
   frames_.emplace_back(time, name);
-  std::ofstream pvd(directory_ / "contacts.pvd");
+  WholeFile pvd_file(directory_ / "contacts.pvd");
+  std::ostream& pvd = pvd_file.stream();
   pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
   for (const auto& [t, file] : frames_) pvd << "<DataSet timestep=\"" << fmt::format("{:.9g}", t) << "\" file=\"" << file << "\"/>\n";
   pvd << "</Collection>\n</VTKFile>\n";
+  pvd_file.commit();
 }
 
 nlohmann::json ContactWriter::summary(const StaticAnalysis& analysis) {

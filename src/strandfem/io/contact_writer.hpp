@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "strandfem/io/case_file.hpp"
+#include "strandfem/io/output_file.hpp"
 #include "strandfem/solver/static_analysis.hpp"
 
 namespace strandfem {
@@ -26,7 +27,7 @@ class ContactWriter {
  private:
   std::filesystem::path directory_;
   const CaseDefinition& case_;
-  std::ofstream csv_;
+  AppendedFile csv_;
   std::vector<std::pair<double, std::string>> frames_;
 };
 

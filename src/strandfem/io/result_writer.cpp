@@ -62,34 +62,80 @@ HistoryRow history_row(const CaseDefinition& c, const StaticAnalysis& analysis, 
   return row;
 }
 
-namespace {
-// Creates the folder and removes a previous run's ParaView files (their count may differ).
-void prepare(const std::filesystem::path& directory) {
-  std::filesystem::create_directories(directory);
-  for (const auto& entry : std::filesystem::directory_iterator(directory)) {
-    const auto ext = entry.path().extension();
-    if (ext == ".vtu" || ext == ".pvd") std::filesystem::remove(entry.path());
+bool is_result_file_name(std::string name) {
+  const std::string partial = kPartialSuffix;
+  if (name.size() > partial.size() && name.compare(name.size() - partial.size(), partial.size(), partial) == 0)
+    name.resize(name.size() - partial.size());
+  for (const char* fixed : {"history.csv", "displacements.csv", "summary.json", "contacts.csv", "wires.csv", "loops.csv",
+                            "deflection_curves.csv", "bending_hysteresis.png", "bending_deflection.png", "result.pvd", "contacts.pvd"})
+    if (name == fixed) return true;
+  // result_NNNNN.vtu, contacts_NNNNN.vtu: five or more digits.
+  for (const std::string prefix : {"result_", "contacts_"}) {
+    if (name.size() < prefix.size() + 5 + 4 || name.compare(0, prefix.size(), prefix) != 0) continue;
+    if (name.compare(name.size() - 4, 4, ".vtu") != 0) continue;
+    const std::string digits = name.substr(prefix.size(), name.size() - prefix.size() - 4);
+    if (digits.find_first_not_of("0123456789") == std::string::npos) return true;
   }
+  return false;
+}
+
+namespace {
+// Creates the folder and removes what an earlier run left in it, so that every result file there is this run's.
+void take_over(const std::filesystem::path& directory) {
+  std::error_code error;
+  std::filesystem::create_directories(directory, error);
+  if (error || !std::filesystem::is_directory(directory))
+    throw_output_error(directory, "cannot create the results folder" + (error ? ": " + error.message() : std::string()), 0);
+  for (const auto& entry : std::filesystem::directory_iterator(directory, error)) {
+    if (!is_result_file_name(entry.path().filename().string()) || entry.is_directory()) continue;
+    std::filesystem::remove(entry.path(), error);
+    if (error) throw_output_error(entry.path(), "cannot remove the previous run's file: " + error.message(), 0);
+  }
+  if (error) throw_output_error(directory, "cannot list the results folder: " + error.message(), 0);
 }
 }  // namespace
 
-ResultWriter::ResultWriter(std::filesystem::path directory, const CaseDefinition& c)
-    : directory_(std::move(directory)), case_(c), contacts_((prepare(directory_), directory_), c), wires_(directory_, c), bending_(directory_, c) {
+ResultWriter::ResultWriter(std::filesystem::path directory, const CaseDefinition& c, nlohmann::json model_info)
+    : directory_(std::move(directory)), case_(c), model_info_(std::move(model_info)),
+      contacts_((take_over(directory_), directory_), c), wires_(directory_, c), bending_(directory_, c) {
+  nlohmann::json running = model_info_;
+  running["status"] = "running";
+  running["configuration"] = case_.resolved;
+  write_summary(running);
   history_.open(directory_ / "history.csv");
-  if (!history_) throw std::runtime_error("cannot write " + (directory_ / "history.csv").string());
-  history_ << "step,increment,load_factor,axial_strain,axial_force_N,torque_Nmm,end_rotation_rad,transverse_load_N,"
+  history_.stream() << "step,increment,load_factor,axial_strain,axial_force_N,torque_Nmm,end_rotation_rad,transverse_load_N,"
               "midspan_deflection_mm,monitor_ux_mm,monitor_uy_mm,monitor_uz_mm,newton_iterations,residual_norm,monitor_fx_N,monitor_fy_N,monitor_fz_N,case_step,cycle,returning\n";
+  history_.end_row();
+}
+
+void ResultWriter::write_summary(const nlohmann::json& summary) const {
+  WholeFile file(directory_ / "summary.json");
+  file.stream() << summary.dump(2) << "\n";
+  file.commit();
+}
+
+void ResultWriter::record_failure(const std::string& status, const std::string& message) noexcept {
+  try {
+    nlohmann::json summary = model_info_;
+    summary["status"] = status;
+    summary["message"] = message;
+    summary["converged_increments"] = rows_.size();
+    summary["configuration"] = case_.resolved;
+    write_summary(summary);
+  } catch (...) {
+    // The folder is what failed: the error already on its way to the user says so.
+  }
 }
 
 void ResultWriter::on_increment(const StaticAnalysis& analysis, const IncrementReport& report) {
   const HistoryRow r = history_row(case_, analysis, report);
   rows_.push_back(r);
-  history_ << fmt::format("{},{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{},{:.4e},{:.10g},{:.10g},{:.10g},{},{},{}\n",
+  history_.stream() << fmt::format("{},{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{},{:.4e},{:.10g},{:.10g},{:.10g},{},{},{}\n",
                           r.step, r.increment, r.load_factor, r.axial_strain, r.axial_force, r.torque, r.end_rotation,
                           r.transverse_load, r.midspan_deflection, r.monitor_displacement.x(), r.monitor_displacement.y(),
                           r.monitor_displacement.z(), r.iterations, r.residual_norm, r.monitor_force.x(), r.monitor_force.y(),
                           r.monitor_force.z(), r.case_step, r.cycle, r.returning ? 1 : 0);
-  history_.flush();
+  history_.end_row();
   ++increments_seen_;
   contacts_.on_increment(analysis, report, increments_seen_, r.load_factor);
   wires_.on_increment(analysis, report, increments_seen_, r.load_factor);
@@ -105,7 +151,8 @@ void ResultWriter::write_vtu(const StaticAnalysis& analysis, double time) {
   const Model& model = analysis.model();
   const Mesh& mesh = model.mesh;
   const std::string name = fmt::format("result_{:05d}.vtu", frames_.size());
-  std::ofstream out(directory_ / name);
+  WholeFile file(directory_ / name);
+  std::ostream& out = file.stream();
   const std::size_t points = mesh.nodes.size(), cells = 2 * mesh.elements.size();
   out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
       << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << points << "\" NumberOfCells=\"" << cells << "\">\n";
@@ -158,24 +205,27 @@ void ResultWriter::write_vtu(const StaticAnalysis& analysis, double time) {
   out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
   for (std::size_t i = 0; i < cells; ++i) out << "3\n";  // VTK_LINE
   out << "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+  file.commit();
   contacts_.write_vtu(analysis, fmt::format("contacts_{:05d}.vtu", frames_.size()), time);
   frames_.emplace_back(time, name);
   write_pvd();
 }
 
 void ResultWriter::write_pvd() const {
-  std::ofstream out(directory_ / "result.pvd");
+  WholeFile file(directory_ / "result.pvd");
+  std::ostream& out = file.stream();
   out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
   for (const auto& [time, file] : frames_)
     out << "<DataSet timestep=\"" << fmt::format("{:.9g}", time) << "\" file=\"" << file << "\"/>\n";
   out << "</Collection>\n</VTKFile>\n";
+  file.commit();
 }
 
-void ResultWriter::finish(const StaticAnalysis& analysis, const AnalysisStatus& status, double wall_seconds,
-                          const nlohmann::json& model_info) {
+void ResultWriter::finish(const StaticAnalysis& analysis, const AnalysisStatus& status, double wall_seconds) {
   if (case_.output.vtu && !last_written_ && increments_seen_ > 0)
     write_vtu(analysis, rows_.empty() ? 0.0 : rows_.back().load_factor);
-  std::ofstream d(directory_ / "displacements.csv");
+  WholeFile displacements(directory_ / "displacements.csv");
+  std::ostream& d = displacements.stream();
   d << "node,wire,layer,x0,y0,z0,ux,uy,uz,rx,ry,rz\n";
   const Mesh& mesh = analysis.model().mesh;
   for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
@@ -185,7 +235,8 @@ void ResultWriter::finish(const StaticAnalysis& analysis, const AnalysisStatus& 
                      n.layer, n.reference.position.x(), n.reference.position.y(), n.reference.position.z(), u.x(), u.y(),
                      u.z(), r.x(), r.y(), r.z());
   }
-  nlohmann::json summary = model_info;
+  displacements.commit();
+  nlohmann::json summary = model_info_;
   summary["status"] = status.converged ? "converged" : "not_converged";
   if (!status.converged) summary["message"] = status.message;
   summary["wall_time_s"] = wall_seconds;
@@ -210,7 +261,7 @@ void ResultWriter::finish(const StaticAnalysis& analysis, const AnalysisStatus& 
   summary["contacts"] = ContactWriter::summary(analysis);
   if (bending_.active()) summary["bending"] = bending_.finish();
   summary["configuration"] = case_.resolved;
-  std::ofstream(directory_ / "summary.json") << summary.dump(2) << "\n";
+  write_summary(summary);
 }
 
 }  // namespace strandfem

@@ -10,6 +10,7 @@
 #include "strandfem/io/bending_writer.hpp"
 #include "strandfem/io/case_file.hpp"
 #include "strandfem/io/contact_writer.hpp"
+#include "strandfem/io/output_file.hpp"
 #include "strandfem/io/wire_writer.hpp"
 #include "strandfem/solver/static_analysis.hpp"
 
@@ -31,24 +32,34 @@ struct HistoryRow {
 
 HistoryRow history_row(const CaseDefinition& c, const StaticAnalysis& analysis, const IncrementReport& report);
 
+// True for the names of files a run writes (history.csv, summary.json, result_00012.vtu, their .tmp forms...):
+// the only files a new run removes from its folder.
+bool is_result_file_name(std::string name);
+
 class ResultWriter {
  public:
-  ResultWriter(std::filesystem::path directory, const CaseDefinition& c);
+  // Takes the folder over before the analysis starts: creates it, removes the result files an earlier run left
+  // (StrandFEM's own names only, see is_result_file_name), writes summary.json with status "running" and the
+  // history.csv header. Every write error, here and later, throws OutputError naming the file.
+  ResultWriter(std::filesystem::path directory, const CaseDefinition& c, nlohmann::json model_info);
   // Appends the history row (flushed, so a failed run keeps what converged) and, every n-th
   // increment, a ParaView file.
   void on_increment(const StaticAnalysis& analysis, const IncrementReport& report);
   // Final displacements, the last ParaView frame (if not written yet) and summary.json.
-  void finish(const StaticAnalysis& analysis, const AnalysisStatus& status, double wall_seconds,
-              const nlohmann::json& model_info);
+  void finish(const StaticAnalysis& analysis, const AnalysisStatus& status, double wall_seconds);
+  // After an error that ends the run: summary.json with this status and message, if it can still be written.
+  void record_failure(const std::string& status, const std::string& message) noexcept;
   const std::vector<HistoryRow>& rows() const { return rows_; }
 
  private:
   void write_vtu(const StaticAnalysis& analysis, double time);
   void write_pvd() const;
+  void write_summary(const nlohmann::json& summary) const;
 
   std::filesystem::path directory_;
   const CaseDefinition& case_;
-  std::ofstream history_;
+  nlohmann::json model_info_;
+  AppendedFile history_;
   ContactWriter contacts_;
   WireWriter wires_;
   BendingWriter bending_;

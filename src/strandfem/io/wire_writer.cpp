@@ -9,10 +9,10 @@ namespace strandfem {
 WireWriter::WireWriter(const std::filesystem::path& directory, const CaseDefinition& c) : case_(c) {
   if (!c.output.wires) return;
   csv_.open(directory / "wires.csv");
-  if (!csv_) throw std::runtime_error("cannot write " + (directory / "wires.csv").string());
   // Resultants in the section axes (1: wire axis); z and angle are the node's reference position.
-  csv_ << "step,increment,load_factor,wire,layer,node,z_mm,angle_deg,radius_mm,axial_force_N,bending_moment_2_Nmm,"
+  csv_.stream() << "step,increment,load_factor,wire,layer,node,z_mm,angle_deg,radius_mm,axial_force_N,bending_moment_2_Nmm,"
           "bending_moment_3_Nmm,torque_Nmm,max_von_mises_MPa,max_plastic_strain\n";
+  csv_.end_row();
 }
 
 void WireWriter::on_increment(const StaticAnalysis& analysis, const IncrementReport& report, int increment_count,
@@ -20,11 +20,12 @@ void WireWriter::on_increment(const StaticAnalysis& analysis, const IncrementRep
   if (!case_.output.wires) return;
   const bool step_end = report.step_fraction >= 1.0 - 1e-12;
   if (increment_count % case_.output.contacts_every != 0 && !step_end) return;
-  for (const WireNodeResult& r : wire_node_results(analysis.model()))
-    csv_ << fmt::format("{},{},{:.8g},{},{},{},{:.6f},{:.4f},{:.6f},{:.8e},{:.8e},{:.8e},{:.8e},{:.6e},{:.6e}\n", report.step + 1,
+  for (const WireNodeResult& r : wire_node_results(analysis.model())) {
+    csv_.stream() << fmt::format("{},{},{:.8g},{},{},{},{:.6f},{:.4f},{:.6f},{:.8e},{:.8e},{:.8e},{:.8e},{:.6e},{:.6e}\n", report.step + 1,
                         report.increment, load_factor, r.wire, r.layer, r.node, r.z, r.angle_degrees, r.radius, r.resultants[0],
                         r.resultants[4], r.resultants[5], r.resultants[3], r.max_von_mises, r.max_plastic_strain);
-  csv_.flush();
+    csv_.end_row();
+  }
 }
 
 }  // namespace strandfem

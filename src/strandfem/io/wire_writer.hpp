@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include "strandfem/io/case_file.hpp"
+#include "strandfem/io/output_file.hpp"
 #include "strandfem/solver/static_analysis.hpp"
 
 namespace strandfem {
@@ -16,7 +17,7 @@ class WireWriter {
 
  private:
   const CaseDefinition& case_;
-  std::ofstream csv_;
+  AppendedFile csv_;
 };
 
 }  // namespace strandfem

@@ -27,6 +27,7 @@ void YamlReader::check_keys(const YAML::Node& map, const std::string& path,
 }
 
 YAML::Node YamlReader::require(const YAML::Node& map, const std::string& path, const char* key) const {
+  if (!map.IsMap()) fail(map, path, std::string("expected a mapping with key '") + key + "'");
   const YAML::Node n = map[key];
   if (!n.IsDefined() || n.IsNull()) fail(map, path.empty() ? key : path + "." + key, "missing required key");
   return n;
@@ -37,12 +38,15 @@ double YamlReader::number(const YAML::Node& node, const std::string& path) const
   double v;
   if (!YAML::convert<double>::decode(node, v) || !std::isfinite(v))
     fail(node, path, "expected a finite number, got '" + node.Scalar() + "'");
+  if (std::abs(v) > kMaxNumberMagnitude)
+    fail(node, path, "expected a number of magnitude at most 1e15 (units N, mm, MPa), got " + node.Scalar());
   return v;
 }
 
 double YamlReader::positive(const YAML::Node& node, const std::string& path, const char* unit) const {
   const double v = number(node, path);
-  if (!(v > 0)) fail(node, path, std::string("expected a positive value (") + unit + "), got " + node.Scalar());
+  if (!(v >= kMinPositiveValue))
+    fail(node, path, std::string("expected a positive value of at least 1e-12 (") + unit + "), got " + node.Scalar());
   return v;
 }
 
@@ -52,11 +56,13 @@ double YamlReader::non_negative(const YAML::Node& node, const std::string& path,
   return v;
 }
 
-int YamlReader::integer(const YAML::Node& node, const std::string& path, int minimum) const {
-  if (!node.IsScalar()) fail(node, path, "expected an integer");
+int YamlReader::integer(const YAML::Node& node, const std::string& path, int minimum, int maximum) const {
+  const std::string range = "expected an integer in " + std::to_string(minimum) + ".." + std::to_string(maximum);
+  if (!node.IsScalar()) fail(node, path, range);
   long long v;
-  if (!YAML::convert<long long>::decode(node, v)) fail(node, path, "expected an integer, got '" + node.Scalar() + "'");
-  if (v < minimum) fail(node, path, "expected an integer >= " + std::to_string(minimum) + ", got " + node.Scalar());
+  // Values beyond 64 bits fail to decode; those within are compared before narrowing to int.
+  if (!YAML::convert<long long>::decode(node, v) || v < minimum || v > maximum)
+    fail(node, path, range + ", got '" + node.Scalar() + "'");
   return static_cast<int>(v);
 }
 

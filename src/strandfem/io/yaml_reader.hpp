@@ -14,6 +14,11 @@ struct CaseError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Bounds every number read from a case file obeys. In N, mm, MPa no physical input lies outside them, and
+// products of a few such values (E d^4, k / L^3) stay far from overflow and underflow in double precision.
+constexpr double kMaxNumberMagnitude = 1e15;
+constexpr double kMinPositiveValue = 1e-12;
+
 class YamlReader {
  public:
   explicit YamlReader(std::string file) : file_(std::move(file)) {}
@@ -21,12 +26,14 @@ class YamlReader {
   [[noreturn]] void fail(const YAML::Node& node, const std::string& path, const std::string& what) const;
   // Rejects keys outside `allowed` (typos must not become silent defaults).
   void check_keys(const YAML::Node& map, const std::string& path, std::initializer_list<const char*> allowed) const;
+  // The value of a required key of `map` (which must be a mapping).
   YAML::Node require(const YAML::Node& map, const std::string& path, const char* key) const;
 
   double number(const YAML::Node& node, const std::string& path) const;
   double positive(const YAML::Node& node, const std::string& path, const char* unit) const;
   double non_negative(const YAML::Node& node, const std::string& path, const char* unit) const;
-  int integer(const YAML::Node& node, const std::string& path, int minimum) const;
+  // An integer in [minimum, maximum]; read in 64 bits, so that 2^31 and beyond are refused, never wrapped.
+  int integer(const YAML::Node& node, const std::string& path, int minimum, int maximum) const;
   std::string text(const YAML::Node& node, const std::string& path) const;
   bool boolean(const YAML::Node& node, const std::string& path) const;
   std::string choice(const YAML::Node& node, const std::string& path, std::initializer_list<const char*> options) const;

@@ -67,8 +67,10 @@ class StaticAnalysis {
     auto operator<=>(const ActionKey&) const = default;
   };
   // extrapolation: multiple of the last converged increment's free motion added to the predictor (0: none).
-  bool solve_increment(double step_fraction, double extrapolation, const std::map<ActionKey, std::pair<double, double>>& ramps,
-                       IncrementReport& report, const std::function<void(const IncrementReport&)>& on_progress);
+  // idle_step: no load or motion changes in this step, so its start is already in equilibrium (docs/theory.md).
+  bool solve_increment(double step_fraction, double extrapolation, bool idle_step,
+                       const std::map<ActionKey, std::pair<double, double>>& ramps, IncrementReport& report,
+                       const std::function<void(const IncrementReport&)>& on_progress);
   void update_slaves();
   void extrapolate_free_motion(double factor);  // adds factor x (committed - previous committed) on free DOFs
   void analyze();                              // symbolic analysis of the current pattern
@@ -84,6 +86,7 @@ class StaticAnalysis {
   std::map<ActionKey, double> applied_motion_, committed_motion_;
   std::vector<double> internal_forces_, values_;
   double force_floor_ = 0, length_scale_ = 0;
+  double roundoff_force_ = 0;  // forces below it are round-off of the internal forces (idle steps)
   double model_extent2_ = 0;  // squared diagonal of the reference bounding box
   double last_correction2_ = 0;
   bool factorization_usable_ = false;  // the last factorization may precondition GMRES on the current pattern

@@ -1,0 +1,45 @@
+// Requirement (issue 10, item 8): a step with nothing to do (no action, or every action held at its total)
+// converges at once at the tolerances the paper cases ship with, with contact and friction, and leaves the
+// state as it was; it was a step that could never converge (the residual floor lay below round-off).
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "program_runner.hpp"
+
+namespace strandfem::verification {
+namespace {
+
+TEST(IdleStep, RestAndHoldStepsConvergeAtOnceWithFrictionalContact) {
+  std::ifstream in(case_path("cases/paper/seven_wire_fixed.yaml"));
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string step = "  - {name: axial strain, increments: 8, axial_strain: 0.008}";
+  ASSERT_NE(text.find(step), std::string::npos);
+  text.replace(text.find(step), step.size(),
+               "  - {name: rest, increments: 2}\n"
+               "  - {name: zero strain, increments: 2, axial_strain: 0}\n"
+               "  - {name: pull, increments: 4, axial_strain: 0.004}\n"
+               "  - {name: hold, increments: 3, axial_strain: 0.004}\n"
+               "  - {name: no action, increments: 2}");
+  const std::string file = ::testing::TempDir() + "/idle_steps.yaml";
+  std::ofstream(file) << text;
+  const ProgramRun r = run_program("run " + file + " -q -o " + ::testing::TempDir() + "/idle_out", "idle");
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  const auto rows = read_csv(std::filesystem::path(::testing::TempDir()) / "idle_out" / "history.csv");
+  ASSERT_EQ(rows.size(), 13u);
+  double pulled_force = 0;
+  for (const auto& row : rows) {
+    const int s = static_cast<int>(row.at("step"));
+    if (s == 3) {
+      pulled_force = row.at("axial_force_N");
+      continue;
+    }
+    EXPECT_EQ(row.at("newton_iterations"), 0) << "step " << s;
+    if (s <= 2) EXPECT_NEAR(row.at("axial_force_N"), 0.0, 1e-6) << "step " << s;
+    else EXPECT_EQ(row.at("axial_force_N"), pulled_force) << "step " << s;  // the converged state, untouched
+  }
+  EXPECT_GT(pulled_force, 50000.0);
+}
+
+}  // namespace
+}  // namespace strandfem::verification

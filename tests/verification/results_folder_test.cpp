@@ -1,0 +1,130 @@
+// Requirement (issue 10): a run owns its results folder (it removes what an earlier run left, only StrandFEM's
+// own files, and summary.json says "running" until the end), write errors end the run with exit code 4 and a
+// message naming the file, whole files are never seen half written, and summary.json records the threads used.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "program_runner.hpp"
+
+namespace strandfem::verification {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path fresh_folder(const std::string& name) {
+  const fs::path p = fs::path(::testing::TempDir()) / ("results_" + name);
+  fs::remove_all(p);
+  fs::create_directories(p);
+  return p;
+}
+
+void write(const fs::path& file, const std::string& text) { std::ofstream(file) << text; }
+
+std::string read(const fs::path& file) {
+  std::ifstream in(file);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+// Runs a shell command line through bash; returns the exit status.
+int bash(const std::string& script) {
+  const std::string command = "/bin/bash -c '" + script + "'";
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST(ResultsFolder, ARunRemovesOnlyTheResultFilesAnEarlierRunLeft) {
+  const fs::path dir = fresh_folder("owned");
+  // An earlier run with contact and more frames, plus files that are not StrandFEM's.
+  for (const char* stale : {"contacts.csv", "contacts.pvd", "contacts_00003.vtu", "result_00042.vtu", "displacements.csv", "summary.json.tmp"})
+    write(dir / stale, "stale");
+  write(dir / "summary.json", R"({"status": "converged"})");
+  for (const char* kept : {"notes.txt", "my_result.vtu", "result.pvd.bak", "result_1.vtu", "history.csv.orig"}) write(dir / kept, "mine");
+  const ProgramRun r = run_program("run " + case_path("cases/examples/seven_wire_axial.yaml") + " -q -o " + dir.string(), "owned");
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  std::set<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir)) names.insert(e.path().filename().string());
+  for (const char* stale : {"contacts.csv", "contacts.pvd", "contacts_00003.vtu", "result_00042.vtu", "summary.json.tmp"})
+    EXPECT_EQ(names.count(stale), 0u) << stale;
+  for (const char* kept : {"notes.txt", "my_result.vtu", "result.pvd.bak", "result_1.vtu", "history.csv.orig"}) {
+    EXPECT_EQ(names.count(kept), 1u) << kept;
+    EXPECT_EQ(read(dir / kept), "mine") << kept;
+  }
+  EXPECT_EQ(read_csv(dir / "history.csv").size(), 10u);
+  EXPECT_EQ(read_csv(dir / "displacements.csv").size(), 343u);
+  EXPECT_EQ(nlohmann::json::parse(read(dir / "summary.json"))["status"], "converged");
+}
+
+// A run killed during its first increment leaves its own summary.json ("running") and history.csv header, not
+// the earlier run's converged results.
+TEST(ResultsFolder, AKilledRunLeavesARunningSummaryAndTheHistoryHeader) {
+  const fs::path dir = fresh_folder("killed");
+  write(dir / "summary.json", R"({"status": "converged"})");
+  write(dir / "displacements.csv", "node\n0\n");
+  write(dir / "history.csv", "step\n1\n2\n");
+  const fs::path err = dir.parent_path() / "killed_stderr.txt";
+  const std::string run = std::string(STRANDFEM_BINARY) + " run " + case_path("cases/paper/wire_120.yaml") + " -v -o " + dir.string();
+  // Kill -9 at the first Newton iteration line (from inside the first increment).
+  const int status = bash(run + " 2> " + err.string() + " & pid=$!; for i in $(seq 6000); do grep -q \"iteration 0\" " + err.string() +
+                          " && break; sleep 0.01; done; kill -9 $pid; wait $pid; exit 0");
+  ASSERT_EQ(status, 0);
+  ASSERT_NE(read(err).find("iteration 0"), std::string::npos) << read(err);
+  const nlohmann::json summary = nlohmann::json::parse(read(dir / "summary.json"));
+  EXPECT_EQ(summary["status"], "running");
+  EXPECT_EQ(summary["nodes"], 5400);
+  EXPECT_FALSE(fs::exists(dir / "displacements.csv"));
+  const std::string history = read(dir / "history.csv");
+  EXPECT_EQ(history.rfind("step,increment,load_factor,", 0), 0u) << history;
+  EXPECT_EQ(std::count(history.begin(), history.end(), '\n'), 1) << history;  // the header, no row yet
+}
+
+// A disk that fills up (here: a 24 KiB file-size limit with SIGXFSZ ignored, so that writes fail with EFBIG):
+// exit code 4 naming the file; every complete file is whole, and no temporary file is left.
+TEST(ResultsFolder, AWriteErrorEndsTheRunWithExitCode4NamingTheFile) {
+  const fs::path dir = fresh_folder("full");
+  const fs::path err = dir.parent_path() / "full_stderr.txt";
+  const int code = bash("ulimit -f 24; trap \"\" XFSZ; exec " + std::string(STRANDFEM_BINARY) + " run " +
+                        case_path("cases/examples/seven_wire_axial.yaml") + " -q -o " + dir.string() + " 2> " + err.string());
+  EXPECT_EQ(code, 4) << read(err);
+  EXPECT_NE(read(err).find("cannot write " + dir.string() + "/"), std::string::npos) << read(err);
+  const nlohmann::json summary = nlohmann::json::parse(read(dir / "summary.json"));  // whole JSON
+  EXPECT_EQ(summary["status"], "output_error");
+  EXPECT_NE(summary["message"].get<std::string>().find("cannot write"), std::string::npos);
+  for (const auto& e : fs::directory_iterator(dir)) {
+    EXPECT_NE(e.path().extension(), ".tmp") << e.path();
+    if (e.path().extension() == ".vtu" || e.path().extension() == ".pvd")
+      EXPECT_NE(read(e.path()).find("</VTKFile>"), std::string::npos) << e.path();
+  }
+  // Every frame result.pvd lists exists.
+  const std::string pvd = fs::exists(dir / "result.pvd") ? read(dir / "result.pvd") : "";
+  for (std::size_t at = pvd.find("file=\""); at != std::string::npos; at = pvd.find("file=\"", at + 1)) {
+    const std::string frame = pvd.substr(at + 6, pvd.find('"', at + 6) - at - 6);
+    EXPECT_TRUE(fs::exists(dir / frame)) << frame;
+  }
+  // A results folder that cannot be created.
+  const ProgramRun r = run_program("run " + case_path("cases/examples/seven_wire_axial.yaml") + " -q -o /dev/null/results", "full_folder");
+  EXPECT_EQ(r.exit_code, 4) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("/dev/null/results"), std::string::npos) << r.stderr_text;
+}
+
+TEST(ResultsFolder, SummaryRecordsTheThreadsUsedAndCapsThemAtTheMachine) {
+  const ProgramRun one = run_case("cases/examples/seven_wire_axial.yaml", "threads_one", "-t 1");
+  ASSERT_EQ(one.exit_code, 0) << one.stderr_text;
+  const nlohmann::json s1 = nlohmann::json::parse(read(one.output / "results" / "summary.json"));
+  EXPECT_EQ(s1["threads"], 1);
+  EXPECT_EQ(s1["configuration"]["solver"]["threads"], 1);
+  const ProgramRun many = run_case("cases/examples/seven_wire_axial.yaml", "threads_many", "-t 100000");
+  ASSERT_EQ(many.exit_code, 0) << many.stderr_text;
+  EXPECT_NE(many.stderr_text.find("warning: -t asks for 100000 threads"), std::string::npos) << many.stderr_text;
+  const nlohmann::json s2 = nlohmann::json::parse(read(many.output / "results" / "summary.json"));
+  EXPECT_GE(s2["threads"].get<int>(), 1);
+  EXPECT_LT(s2["threads"].get<int>(), 100000);
+  const ProgramRun huge = run_case("cases/examples/seven_wire_axial.yaml", "threads_huge", "-t 99999999999");
+  EXPECT_EQ(huge.exit_code, 2) << huge.stderr_text;
+}
+
+}  // namespace
+}  // namespace strandfem::verification
