@@ -10,8 +10,11 @@ namespace strandfem::verification {
 namespace {
 
 TEST(BendingProgram, FrictionlessStrandBendsCloseToEIminWithoutLoop) {
-  const ProgramRun run = run_case("cases/verification/bending_cycles_frictionless.yaml", "bending_frictionless");
+  const ProgramRun run = run_case("cases/verification/bending_cycles_frictionless.yaml", "bending_frictionless", "--plots");
   ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
+  // --plots draws the loop and the deflection curve (scripts/plot_bending.py) into the results folder.
+  EXPECT_TRUE(std::filesystem::exists(run.output / "results" / "bending_hysteresis.png")) << run.stderr_text;
+  EXPECT_TRUE(std::filesystem::exists(run.output / "results" / "bending_deflection.png")) << run.stderr_text;
   const auto loops = read_csv(run.output / "results" / "loops.csv");
   ASSERT_EQ(loops.size(), 1u);
   const auto& loop = loops[0];
