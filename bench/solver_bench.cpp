@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   }
   const int repeats = argc > 2 ? std::stoi(argv[2]) : 3;
   CaseDefinition c = load_case(argv[1]);
+  c.model.build_elements();
   const DofMap dofs = build_dof_map(c.model);
   Assembler assembler(c.model, dofs);
   // A slightly stretched and twisted state, so the tangent has its geometric terms.

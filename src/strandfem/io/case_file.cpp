@@ -559,7 +559,9 @@ CaseDefinition load_case(const std::string& path) {
   } catch (const ModelSizeError& e) {
     throw CaseError(path + ": " + e.what());
   }
-  c.model.build_elements();
+  // Elements (with their section-point state: fibre histories of elastoplastic wires) are built by the analysis
+  // that uses them, not here: `info` and the checks below need the mesh only, and an elastoplastic strand at
+  // the size limit would otherwise take gigabytes just to be read.
   try {
     build_dof_map(c.model);  // supports or loads on tied nodes, doubly tied nodes: refused before any run starts
   } catch (const std::invalid_argument& e) {

@@ -15,7 +15,7 @@ namespace strandfem {
 
 // Model-size limit, checked before anything is allocated: 250,000 nodes (1,500,000 DOFs). The largest paper
 // case (S32, 1 m) has 12,621 nodes; a model at the limit already takes seconds and gigabytes just to be built
-// (elastoplastic wires keep the fibre states of every element: 2.7 GB at the limit, measured).
+// (a run of elastoplastic wires keeps the fibre states of every element: 2.7 GB at the limit, measured).
 constexpr int kMaxModelNodes = 250000;
 // Elements shorter than this fraction of the coordinates' magnitude (or than kMinElementLength) would lose
 // their geometry to round-off: positions carry 16 digits, an element's strains are differences of them.
