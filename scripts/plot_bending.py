@@ -23,6 +23,17 @@ def rows(folder, name):
     return list(csv.DictReader(open(path))) if os.path.exists(path) else []
 
 
+def save(fig, ax, xlabel, ylabel, path):
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
+    return path
+
+
 def plot_folder(folder):
     history = rows(folder, "history.csv")
     loops = rows(folder, "loops.csv")
@@ -46,15 +57,8 @@ def plot_folder(folder):
         peak = float(loops[0]["peak_load_N"])
         for key, style, label in (("eq31_ei_max_mm", "k--", "EImax (eq. 3.1)"), ("eq31_ei_min_mm", "k:", "EImin (eq. 3.1)")):
             ax.plot([0, float(loops[0][key])], [0, peak], style, lw=1, label=label)
-    ax.set_xlabel("midspan deflection (mm), from the start of the first cycle")
-    ax.set_ylabel("transverse load V (N)")
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    out = os.path.join(folder, "bending_hysteresis.png")
-    fig.savefig(out, dpi=130)
-    plt.close(fig)
-    written.append(out)
+    written.append(save(fig, ax, "midspan deflection (mm), from the start of the first cycle", "transverse load V (N)",
+                        os.path.join(folder, "bending_hysteresis.png")))
     if curves:
         fig, ax = plt.subplots(figsize=(6, 4.5))
         for c in sorted({int(r["cycle"]) for r in curves}):
@@ -64,15 +68,8 @@ def plot_folder(folder):
             if c == 1:
                 ax.plot(z, [float(r["eq32_ei_max_mm"]) for r in pts], "k--", lw=1, label="EImax (eq. 3.2)")
                 ax.plot(z, [float(r["eq32_ei_min_mm"]) for r in pts], "k:", lw=1, label="EImin (eq. 3.2)")
-        ax.set_xlabel("axial position z (mm)")
-        ax.set_ylabel("core deflection at peak V (mm)")
-        ax.grid(alpha=0.3)
-        ax.legend(fontsize=8)
-        fig.tight_layout()
-        out = os.path.join(folder, "bending_deflection.png")
-        fig.savefig(out, dpi=130)
-        plt.close(fig)
-        written.append(out)
+        written.append(save(fig, ax, "axial position z (mm)", "core deflection at peak V (mm)",
+                            os.path.join(folder, "bending_deflection.png")))
     return written
 
 

@@ -41,12 +41,12 @@ TEST(TensionedBeam, EquivalentStiffnessInvertsEq31) {
 TEST(Hysteresis, ParallelogramLoopAreaStiffnessAndSteadiness) {
   // Two identical cycles from (0, 0):
   // out (0,0) -> (1,10) -> (3,12); back (3,12) -> (2,2) -> (0,0). Its area: triangles (0,0),(1,10),(3,12) and (0,0),(3,12),(2,2), 9 each.
-  std::vector<LoadDeflectionPoint> history = {{0, false, 0, 0}};  // end of the tension ramp
+  std::vector<LoadDeflectionPoint> history = {{0, false, 0, 0, 500}};  // end of the tension ramp
   for (int cycle = 1; cycle <= 2; ++cycle) {
-    history.push_back({cycle, false, 10, 1});
-    history.push_back({cycle, false, 12, 3});
-    history.push_back({cycle, true, 2, 2});
-    history.push_back({cycle, true, 0, 0});
+    history.push_back({cycle, false, 10, 1, 500});
+    history.push_back({cycle, false, 12, 3, 510});
+    history.push_back({cycle, true, 2, 2, 505});
+    history.push_back({cycle, true, 0, 0, 500});
   }
   const auto loops = hysteresis_loops(history);
   ASSERT_EQ(loops.size(), 2u);
@@ -54,6 +54,7 @@ TEST(Hysteresis, ParallelogramLoopAreaStiffnessAndSteadiness) {
     EXPECT_NEAR(loop.area, 18.0, 1e-12);
     EXPECT_DOUBLE_EQ(loop.peak_load, 12);
     EXPECT_DOUBLE_EQ(loop.peak_deflection, 3);
+    EXPECT_DOUBLE_EQ(loop.peak_tension, 510);
     EXPECT_DOUBLE_EQ(loop.secant_stiffness, 4);
     EXPECT_DOUBLE_EQ(loop.loading_tangent, 10);
     EXPECT_DOUBLE_EQ(loop.unloading_tangent, 10);

@@ -24,10 +24,9 @@ BendingWriter::BendingWriter(const std::filesystem::path& directory, const CaseD
 void BendingWriter::on_increment(const StaticAnalysis& analysis, const IncrementReport& report, double axial_force,
                                  double transverse_load, double midspan_deflection) {
   if (!active_) return;
-  history_.push_back({report.origin.cycle, report.origin.returning, transverse_load, midspan_deflection});
+  history_.push_back({report.origin.cycle, report.origin.returning, transverse_load, midspan_deflection, axial_force});
   const bool peak = report.origin.cycle > 0 && !report.origin.returning && report.step_fraction >= 1.0 - 1e-12;
   if (!peak) return;
-  peak_tension_.push_back(axial_force);
   // The core's transverse deflection along the strand beside eq. 3.2 (x from the nearer clamp).
   const Model& model = analysis.model();
   const double length = case_.axial_length;
@@ -53,7 +52,7 @@ nlohmann::json BendingWriter::finish() {
   const double length = case_.axial_length;
   for (std::size_t i = 0; i < loops.size(); ++i) {
     const HysteresisLoop& l = loops[i];
-    const double tension = l.cycle - 1 < static_cast<int>(peak_tension_.size()) ? peak_tension_[l.cycle - 1] : 0.0;
+    const double tension = l.peak_tension;
     const double travel = l.peak_deflection - l.start_deflection;
     const double secant_ei = tension > 0 ? equivalent_bending_stiffness(travel / l.peak_load, tension, length) : 0.0;
     const double y_max = tension > 0 ? tensioned_beam_midspan_deflection(l.peak_load, tension, ei_max_, length) : 0.0;

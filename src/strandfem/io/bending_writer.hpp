@@ -31,7 +31,6 @@ class BendingWriter {
   double ei_max_ = 0, ei_min_ = 0;   // N mm^2 (eqs. 1.1, 1.2)
   AppendedFile curves_;
   std::vector<LoadDeflectionPoint> history_;
-  std::vector<double> peak_tension_;  // axial force at each cycle's peak
 };
 
 }  // namespace strandfem

@@ -58,6 +58,7 @@ std::vector<HysteresisLoop> hysteresis_loops(const std::vector<LoadDeflectionPoi
         if (!polygon[j]->returning || j == 0) peak = j;
       loop.peak_load = polygon[peak]->load;
       loop.peak_deflection = polygon[peak]->deflection;
+      loop.peak_tension = polygon[peak]->tension;
       loop.start_deflection = start.deflection;
       loop.end_deflection = polygon.back()->deflection;
       double twice_area = 0;

@@ -25,6 +25,7 @@ struct LoadDeflectionPoint {
   bool returning = false; // on the half that brings V back
   double load = 0;        // N
   double deflection = 0;  // mm
+  double tension = 0;     // N, axial force of the strand
 };
 
 // A cycle's loop: from the state before the cycle, out to the peak load and back.
@@ -33,6 +34,7 @@ struct HysteresisLoop {
   double area = 0;                // N mm: energy dissipated in the cycle (polygon closed by a straight line)
   double peak_load = 0;           // V at the turning point
   double peak_deflection = 0;     // y there
+  double peak_tension = 0;        // axial force there
   double start_deflection = 0;    // y where the cycle started
   double end_deflection = 0;      // y where it ended (ratchet: end - start)
   double secant_stiffness = 0;    // (V_peak - V_start) / (y_peak - y_start), N/mm
