@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "strandfem/core/archive.hpp"
 #include "strandfem/core/rotation.hpp"
 
 namespace strandfem {
@@ -184,6 +185,17 @@ void BeamElement::commit() {
 }
 void BeamElement::revert() {
   for (auto& p : points_) p.trial = p.committed;
+}
+
+void BeamElement::save_history(ArchiveWriter& out) const {
+  for (const auto& p : points_) out.vector(p.committed);
+}
+void BeamElement::restore_history(ArchiveReader& in) {
+  for (auto& p : points_) {
+    SectionHistory h = in.vector<double>();
+    if (h.size() != p.committed.size()) throw ArchiveError("checkpoint does not match this model: section history size differs");
+    p.committed = p.trial = std::move(h);
+  }
 }
 
 }  // namespace strandfem

@@ -7,6 +7,9 @@
 
 namespace strandfem {
 
+class ArchiveWriter;
+class ArchiveReader;
+
 // Current position and orientation of a node; the rotation maps the reference axes (e1 = beam tangent)
 // to the current section axes.
 struct NodeState {
@@ -46,6 +49,9 @@ class BeamElement {
 
   void commit();  // trial history becomes committed (increment converged)
   void revert();  // trial history reset to committed (increment rejected)
+  // Checkpoints: the committed history of both integration points.
+  void save_history(ArchiveWriter& out) const;
+  void restore_history(ArchiveReader& in);
 
   const std::array<int, 3>& nodes() const { return nodes_; }
   const Section& section() const { return *section_; }

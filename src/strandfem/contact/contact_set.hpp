@@ -53,6 +53,10 @@ class ContactSet final : public Interaction {
   int changes_at_convergence() override { return release_tensile(); }
   void revert() override {}  // working states are rebuilt from the histories by begin_increment
   void activate_closed();
+  // Checkpoints: everything a resumed run needs to continue from the last converged increment. restore_state
+  // replaces the points found by initialize() and evaluates them at `state` (the checkpoint's converged state).
+  void save_state(ArchiveWriter& out) const override;
+  void restore_state(ArchiveReader& in, const Mesh& mesh, const std::vector<NodeState>& state) override;
   int release_tensile();
 
   // Converged increment at `state`: writes histories (stick points, slip), moves crossings to the

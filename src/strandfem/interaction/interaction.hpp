@@ -47,6 +47,10 @@ class Interaction {
   virtual bool commit(const Mesh& mesh, const std::vector<NodeState>& state) = 0;
   // Rejected increment (cut-back): the next begin_increment starts again from the converged history.
   virtual void revert() = 0;
+  // Checkpoints: writes the converged state (history, bookkeeping); restore_state reads it back in place of the
+  // initial one and evaluates at `state`, the checkpoint's converged nodal state.
+  virtual void save_state(ArchiveWriter& out) const = 0;
+  virtual void restore_state(ArchiveReader& in, const Mesh& mesh, const std::vector<NodeState>& state) = 0;
 };
 
 }  // namespace strandfem

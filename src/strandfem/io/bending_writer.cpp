@@ -8,7 +8,7 @@
 
 namespace strandfem {
 
-BendingWriter::BendingWriter(const std::filesystem::path& directory, const CaseDefinition& c)
+BendingWriter::BendingWriter(const std::filesystem::path& directory, const CaseDefinition& c, bool resuming)
     : directory_(directory), case_(c) {
   if (!c.strand) return;
   for (const LoadStep& s : c.model.steps) active_ |= s.cycles > 0;
@@ -16,6 +16,7 @@ BendingWriter::BendingWriter(const std::filesystem::path& directory, const CaseD
   const BendingStiffnessBounds bounds = bending_stiffness_bounds(*c.strand);
   ei_max_ = bounds.ei_max;
   ei_min_ = bounds.ei_min;
+  if (resuming) return;
   curves_.open(directory / "deflection_curves.csv");
   curves_.stream() << "cycle,transverse_load_N,axial_force_N,z_mm,deflection_mm,eq32_ei_max_mm,eq32_ei_min_mm\n";
   curves_.end_row();
@@ -67,6 +68,19 @@ nlohmann::json BendingWriter::finish() {
   }
   file.commit();
   return {{"ei_max_Nm2", 1e-6 * ei_max_}, {"ei_min_Nm2", 1e-6 * ei_min_}, {"loops", rows}};
+}
+
+void BendingWriter::save_state(ArchiveWriter& out) const {
+  out.section("bending");
+  out.value(static_cast<std::uint64_t>(active_ ? curves_.size() : 0));
+  out.vector(history_);
+}
+
+void BendingWriter::restore_state(ArchiveReader& in) {
+  in.section("bending");
+  const auto size = in.value<std::uint64_t>();
+  if (active_) curves_.resume(directory_ / "deflection_curves.csv", size);
+  history_ = in.vector<LoadDeflectionPoint>();
 }
 
 }  // namespace strandfem

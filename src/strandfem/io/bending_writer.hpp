@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "strandfem/core/archive.hpp"
 #include "strandfem/io/case_file.hpp"
 #include "strandfem/io/output_file.hpp"
 #include "strandfem/post/bending.hpp"
@@ -16,13 +17,16 @@ namespace strandfem {
 class BendingWriter {
  public:
   // Active for strand cases with a cyclic step; otherwise every call does nothing.
-  BendingWriter(const std::filesystem::path& directory, const CaseDefinition& c);
+  // resuming: the files are left alone until restore_state reopens them where the checkpoint stood.
+  BendingWriter(const std::filesystem::path& directory, const CaseDefinition& c, bool resuming = false);
   bool active() const { return active_; }
   // transverse_load (N) and midspan_deflection (mm) of the converged increment, as in history.csv.
   void on_increment(const StaticAnalysis& analysis, const IncrementReport& report, double axial_force,
                     double transverse_load, double midspan_deflection);
   // Writes loops.csv; returns the summary block (references, loops, steadiness).
   nlohmann::json finish();
+  void save_state(ArchiveWriter& out) const;
+  void restore_state(ArchiveReader& in);
 
  private:
   std::filesystem::path directory_;

@@ -516,7 +516,8 @@ class CaseParser {
   }
 
   void parse_output(const YAML::Node& node) {
-    reader_.check_keys(node, "output", {"every", "vtu", "monitor", "contacts", "contacts_every", "wires"});
+    reader_.check_keys(node, "output", {"every", "vtu", "monitor", "contacts", "contacts_every", "wires", "checkpoint"});
+    if (node["checkpoint"]) out_.output.checkpoint = reader_.boolean(node["checkpoint"], "output.checkpoint");
     if (node["wires"]) out_.output.wires = reader_.boolean(node["wires"], "output.wires");
     if (node["contacts"]) out_.output.contacts = reader_.boolean(node["contacts"], "output.contacts");
     if (node["contacts_every"]) {

@@ -18,6 +18,7 @@ struct OutputOptions {
   int contacts_every = 1;        // contact rows every n-th converged increment (the last of each step always)
   bool contacts_every_set = false;
   bool wires = true;             // DIR/wires.csv: section results along every wire, at the contact rows' increments
+  bool checkpoint = true;        // DIR/checkpoint.bin after every converged increment (strandfem run --resume)
 };
 
 // A parsed, validated case: the model plus what the outputs need to know about it.

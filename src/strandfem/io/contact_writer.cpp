@@ -10,14 +10,35 @@ namespace {
 bool active(const CaseDefinition& c) { return c.model.contact_settings.enabled && c.output.contacts; }
 }  // namespace
 
-ContactWriter::ContactWriter(std::filesystem::path directory, const CaseDefinition& c)
+ContactWriter::ContactWriter(std::filesystem::path directory, const CaseDefinition& c, bool resuming)
     : directory_(std::move(directory)), case_(c) {
-  if (!active(c)) return;
+  if (!active(c) || resuming) return;
   csv_.open(directory_ / "contacts.csv");
   // Line contacts carry forces per unit length (N/mm), point contacts forces (N): see force_unit.
   csv_.stream() << "step,increment,load_factor,kind,wire_a,wire_b,layer_a,layer_b,element_a,element_b,xi,eta,x_mm,y_mm,z_mm,"
           "angle_deg,gap_mm,normal_force,q1,q2,force_unit,status,slip_mm,slip_since_reversal_mm\n";
   csv_.end_row();
+}
+
+void ContactWriter::save_state(ArchiveWriter& out) const {
+  out.section("contacts.csv");
+  out.value(static_cast<std::uint64_t>(active(case_) ? csv_.size() : 0));
+  out.value(static_cast<std::uint64_t>(frames_.size()));
+  for (const auto& [time, name] : frames_) {
+    out.value(time);
+    out.string(name);
+  }
+}
+
+void ContactWriter::restore_state(ArchiveReader& in) {
+  in.section("contacts.csv");
+  const auto size = in.value<std::uint64_t>();
+  if (active(case_)) csv_.resume(directory_ / "contacts.csv", size);
+  frames_.resize(in.value<std::uint64_t>());
+  for (auto& [time, name] : frames_) {
+    time = in.value<double>();
+    name = in.string();
+  }
 }
 
 void ContactWriter::on_increment(const StaticAnalysis& analysis, const IncrementReport& report, int increment_count,

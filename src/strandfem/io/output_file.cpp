@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <string>
 #include <system_error>
 
 namespace strandfem {
@@ -42,6 +43,28 @@ void AppendedFile::open(const std::filesystem::path& path) {
   errno = 0;
   out_.open(path, std::ios::binary | std::ios::trunc);
   if (!out_) throw_output_error(path, "cannot create the file", errno);
+}
+
+void AppendedFile::resume(const std::filesystem::path& path, std::uintmax_t size) {
+  path_ = path;
+  std::error_code error;
+  const std::uintmax_t found = std::filesystem::file_size(path, error);
+  if (error) throw_output_error(path, "cannot resume: the file is missing (" + error.message() + ")", 0);
+  if (found < size)
+    throw_output_error(path, "cannot resume: the file is shorter (" + std::to_string(found) + " bytes) than at the checkpoint (" +
+                                 std::to_string(size) + ")", 0);
+  std::filesystem::resize_file(path, size, error);
+  if (error) throw_output_error(path, "cannot resume: cutting the file back failed: " + error.message(), 0);
+  errno = 0;
+  out_.open(path, std::ios::binary | std::ios::app);
+  if (!out_) throw_output_error(path, "cannot open the file to append", errno);
+}
+
+std::uintmax_t AppendedFile::size() const {
+  std::error_code error;
+  const std::uintmax_t bytes = std::filesystem::file_size(path_, error);
+  if (error) throw_output_error(path_, "cannot read the file's size: " + error.message(), 0);
+  return bytes;
 }
 
 void AppendedFile::end_row() {

@@ -1,6 +1,7 @@
 // Result files written safely: whole files appear only once complete (temporary name, then rename), appended
 // files are flushed and checked row by row; any write error is an OutputError naming the file.
 #pragma once
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -38,6 +39,10 @@ class WholeFile {
 class AppendedFile {
  public:
   void open(const std::filesystem::path& path);  // truncates
+  // Resuming a run: cuts the file back to `size` bytes (dropping rows written after the checkpoint) and appends
+  // from there. OutputError when the file is missing or shorter than that.
+  void resume(const std::filesystem::path& path, std::uintmax_t size);
+  std::uintmax_t size() const;  // bytes written so far (every row is flushed)
   bool is_open() const { return out_.is_open(); }
   std::ostream& stream() { return out_; }
   void end_row();

@@ -67,7 +67,7 @@ bool is_result_file_name(std::string name) {
   if (name.size() > partial.size() && name.compare(name.size() - partial.size(), partial.size(), partial) == 0)
     name.resize(name.size() - partial.size());
   for (const char* fixed : {"history.csv", "displacements.csv", "summary.json", "contacts.csv", "wires.csv", "loops.csv",
-                            "deflection_curves.csv", "bending_hysteresis.png", "bending_deflection.png", "result.pvd", "contacts.pvd"})
+                            "deflection_curves.csv", "checkpoint.bin", "bending_hysteresis.png", "bending_deflection.png", "result.pvd", "contacts.pvd"})
     if (name == fixed) return true;
   // result_NNNNN.vtu, contacts_NNNNN.vtu: five or more digits.
   for (const std::string prefix : {"result_", "contacts_"}) {
@@ -95,13 +95,15 @@ void take_over(const std::filesystem::path& directory) {
 }
 }  // namespace
 
-ResultWriter::ResultWriter(std::filesystem::path directory, const CaseDefinition& c, nlohmann::json model_info)
+ResultWriter::ResultWriter(std::filesystem::path directory, const CaseDefinition& c, nlohmann::json model_info, bool resuming)
     : directory_(std::move(directory)), case_(c), model_info_(std::move(model_info)),
-      contacts_((take_over(directory_), directory_), c), wires_(directory_, c), bending_(directory_, c) {
+      contacts_((resuming ? void() : take_over(directory_), directory_), c, resuming), wires_(directory_, c, resuming),
+      bending_(directory_, c, resuming) {
   nlohmann::json running = model_info_;
   running["status"] = "running";
   running["configuration"] = case_.resolved;
   write_summary(running);
+  if (resuming) return;
   history_.open(directory_ / "history.csv");
   history_.stream() << "step,increment,load_factor,axial_strain,axial_force_N,torque_Nmm,end_rotation_rad,transverse_load_N,"
               "midspan_deflection_mm,monitor_ux_mm,monitor_uy_mm,monitor_uz_mm,newton_iterations,residual_norm,monitor_fx_N,monitor_fy_N,monitor_fz_N,case_step,cycle,returning\n";
@@ -125,6 +127,62 @@ void ResultWriter::record_failure(const std::string& status, const std::string& 
   } catch (...) {
     // The folder is what failed: the error already on its way to the user says so.
   }
+}
+
+namespace {
+void save_row(ArchiveWriter& out, const HistoryRow& r) {
+  out.value(std::array<int, 6>{r.step, r.increment, r.iterations, r.case_step, r.cycle, r.returning ? 1 : 0});
+  out.value(std::array<double, 8>{r.load_factor, r.axial_strain, r.axial_force, r.torque, r.end_rotation, r.transverse_load,
+                                  r.midspan_deflection, r.residual_norm});
+  out.vec3(r.monitor_displacement);
+  out.vec3(r.monitor_force);
+}
+HistoryRow load_row(ArchiveReader& in) {
+  HistoryRow r;
+  const auto ints = in.value<std::array<int, 6>>();
+  r.step = ints[0], r.increment = ints[1], r.iterations = ints[2], r.case_step = ints[3], r.cycle = ints[4];
+  r.returning = ints[5] != 0;
+  const auto reals = in.value<std::array<double, 8>>();
+  r.load_factor = reals[0], r.axial_strain = reals[1], r.axial_force = reals[2], r.torque = reals[3];
+  r.end_rotation = reals[4], r.transverse_load = reals[5], r.midspan_deflection = reals[6], r.residual_norm = reals[7];
+  r.monitor_displacement = in.vec3();
+  r.monitor_force = in.vec3();
+  return r;
+}
+}  // namespace
+
+void ResultWriter::save_state(ArchiveWriter& out) const {
+  out.section("history.csv");
+  out.value(static_cast<std::uint64_t>(history_.size()));
+  out.value(static_cast<std::uint64_t>(rows_.size()));
+  for (const HistoryRow& r : rows_) save_row(out, r);
+  out.value(static_cast<std::uint64_t>(frames_.size()));
+  for (const auto& [time, name] : frames_) {
+    out.value(time);
+    out.string(name);
+  }
+  out.value(increments_seen_);
+  out.value(last_written_);
+  contacts_.save_state(out);
+  wires_.save_state(out);
+  bending_.save_state(out);
+}
+
+void ResultWriter::restore_state(ArchiveReader& in) {
+  in.section("history.csv");
+  history_.resume(directory_ / "history.csv", in.value<std::uint64_t>());
+  rows_.resize(in.value<std::uint64_t>());
+  for (HistoryRow& r : rows_) r = load_row(in);
+  frames_.resize(in.value<std::uint64_t>());
+  for (auto& [time, name] : frames_) {
+    time = in.value<double>();
+    name = in.string();
+  }
+  in.value(increments_seen_);
+  in.value(last_written_);
+  contacts_.restore_state(in);
+  wires_.restore_state(in);
+  bending_.restore_state(in);
 }
 
 void ResultWriter::on_increment(const StaticAnalysis& analysis, const IncrementReport& report) {
@@ -250,6 +308,7 @@ void ResultWriter::finish(const StaticAnalysis& analysis, const AnalysisStatus& 
                                   {"krylov_iterations", a.krylov_iterations},
                                   {"pattern_rebuilds", a.pattern_rebuilds},
                                   {"rejected_extrapolations", a.rejected_extrapolations},
+                                  {"plain_retries", a.plain_retries},
                                   {"assembly_seconds", a.assembly_seconds},
                                   {"linear_seconds", a.linear_seconds},
                                   {"factorization_seconds", l.factorization_seconds},

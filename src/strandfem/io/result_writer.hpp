@@ -41,7 +41,9 @@ class ResultWriter {
   // Takes the folder over before the analysis starts: creates it, removes the result files an earlier run left
   // (StrandFEM's own names only, see is_result_file_name), writes summary.json with status "running" and the
   // history.csv header. Every write error, here and later, throws OutputError naming the file.
-  ResultWriter(std::filesystem::path directory, const CaseDefinition& c, nlohmann::json model_info);
+  // With `resuming`, the folder keeps its files (a resumed run continues them): restore_state then reopens the
+  // appended files where the checkpoint stood.
+  ResultWriter(std::filesystem::path directory, const CaseDefinition& c, nlohmann::json model_info, bool resuming = false);
   // Appends the history row (flushed, so a failed run keeps what converged) and, every n-th
   // increment, a ParaView file.
   void on_increment(const StaticAnalysis& analysis, const IncrementReport& report);
@@ -50,6 +52,9 @@ class ResultWriter {
   // After an error that ends the run: summary.json with this status and message, if it can still be written.
   void record_failure(const std::string& status, const std::string& message) noexcept;
   const std::vector<HistoryRow>& rows() const { return rows_; }
+  // Checkpoints: the appended files' lengths and what the writers keep in memory (rows, frames, loops so far).
+  void save_state(ArchiveWriter& out) const;
+  void restore_state(ArchiveReader& in);
 
  private:
   void write_vtu(const StaticAnalysis& analysis, double time);

@@ -6,13 +6,25 @@
 
 namespace strandfem {
 
-WireWriter::WireWriter(const std::filesystem::path& directory, const CaseDefinition& c) : case_(c) {
-  if (!c.output.wires) return;
+WireWriter::WireWriter(const std::filesystem::path& directory, const CaseDefinition& c, bool resuming)
+    : directory_(directory), case_(c) {
+  if (!c.output.wires || resuming) return;
   csv_.open(directory / "wires.csv");
   // Resultants in the section axes (1: wire axis); z and angle are the node's reference position.
   csv_.stream() << "step,increment,load_factor,wire,layer,node,z_mm,angle_deg,radius_mm,axial_force_N,bending_moment_2_Nmm,"
           "bending_moment_3_Nmm,torque_Nmm,max_von_mises_MPa,max_plastic_strain\n";
   csv_.end_row();
+}
+
+void WireWriter::save_state(ArchiveWriter& out) const {
+  out.section("wires.csv");
+  out.value(static_cast<std::uint64_t>(case_.output.wires ? csv_.size() : 0));
+}
+
+void WireWriter::restore_state(ArchiveReader& in) {
+  in.section("wires.csv");
+  const auto size = in.value<std::uint64_t>();
+  if (case_.output.wires) csv_.resume(directory_ / "wires.csv", size);
 }
 
 void WireWriter::on_increment(const StaticAnalysis& analysis, const IncrementReport& report, int increment_count,

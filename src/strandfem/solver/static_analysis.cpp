@@ -239,6 +239,7 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
       extrapolation = 0;
       ++statistics_.rejected_extrapolations;
     }
+    report.extrapolated = extrapolation > 0;
   }
   accept_iterate();
   // Newton iterations count from the last contact change (release or friction switch); the number of such
@@ -298,64 +299,72 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
       increment_displacement2 += (state_[node].position - committed_state_[node].position).squaredNorm() +
                                  length_scale_ * length_scale_ * rotation.squaredNorm();
     }
+    report.correction_ratio = increment_displacement2 > 0 ? std::sqrt(last_correction2_ / increment_displacement2) : 0.0;
   }
 }
 
 AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementReport&)>& on_increment,
                                    const std::function<void(const IncrementReport&)>& on_progress) {
-  std::map<ActionKey, double> totals;  // totals at the end of the previous step
-  std::map<ActionKey, double> previous_change;  // each action's change over the previous step
-  double previous_last_size = 0;                // that step's last converged increment (its fraction units)
   const std::vector<LoadRamp> protocol = expand_load_steps(model_.steps);
-  for (std::size_t s = 0; s < protocol.size(); ++s) {
-    const LoadRamp& step = protocol[s];
+  Progress& p = progress_;  // a restored checkpoint resumes mid-step, with the sizes it had
+  while (p.ramp < static_cast<int>(protocol.size())) {
+    const LoadRamp& step = protocol[p.ramp];
     std::map<ActionKey, std::pair<double, double>> ramps;
-    for (const auto& [key, value] : totals) ramps[key] = {value, value};
+    for (const auto& [key, value] : p.totals) ramps[key] = {value, value};
     for (const NodalAction& a : step.actions) {
       const ActionKey key{a.node, a.component, a.kind};
-      const double start = totals.count(key) ? totals[key] : 0.0;
+      const double start = p.totals.count(key) ? p.totals[key] : 0.0;
       ramps[key] = {start, a.value};
     }
     const double nominal = 1.0 / std::max(1, step.increments);
     bool idle_step = true;  // no action changes over the step
     for (const auto& [key, ramp] : ramps) idle_step = idle_step && ramp.first == ramp.second;
-    double fraction = 0, size = nominal;
-    double largest_size = nominal;  // cap on the increment size after a failure (see below)
-    int easy_at_cap = 0;
-    int converged_increments = 0, cutbacks = 0;
-    // Size of the last converged increment in this step's fraction units (0: none, no extrapolation). A step
-    // that goes on loading the same way as the previous one (every action changes by the same positive
-    // multiple c of its previous change) extrapolates from that step's last increment, which measures 1/c of it.
-    double last_size = 0;
-    {
+    if (!p.in_step) {
+      p.in_step = true;
+      p.fraction = 0;
+      p.size = p.largest_size = nominal;
+      p.easy_at_cap = p.converged_increments = 0;
+      p.extrapolation_failed = false;
+      // A step that goes on loading the same way as the previous one (every action changes by the same positive
+      // multiple c of its previous change) extrapolates from that step's last increment, which measures 1/c of it.
+      p.last_size = 0;
       double c = 0, largest = 0;
       for (const auto& [key, ramp] : ramps) {
-        const double before = previous_change.count(key) ? previous_change[key] : 0.0;
+        const double before = p.previous_change.count(key) ? p.previous_change[key] : 0.0;
         if (std::abs(before) > largest) largest = std::abs(before), c = (ramp.second - ramp.first) / before;
       }
       bool proportional = c > 0;
       for (const auto& [key, ramp] : ramps) {
-        const double before = previous_change.count(key) ? previous_change[key] : 0.0, now = ramp.second - ramp.first;
+        const double before = p.previous_change.count(key) ? p.previous_change[key] : 0.0, now = ramp.second - ramp.first;
         if (std::abs(now - c * before) > 1e-9 * (std::abs(now) + std::abs(before))) proportional = false;
       }
-      if (proportional) last_size = previous_last_size / c;
+      if (proportional) p.last_size = p.previous_last_size / c;
     }
-    while (fraction < 1.0 - 1e-12) {
+    int cutbacks = 0;
+    bool plain_retry = false;  // the next attempt repeats a failed extrapolated one without extrapolation
+    while (p.fraction < 1.0 - 1e-12) {
       // Never past the next point of the nominal grid (k / increments): after cut-backs the increments land on
       // the load levels the case asked for again.
-      const double next_nominal = nominal * (std::floor(fraction / nominal + 1e-9) + 1.0);
-      const double target = std::min({1.0, fraction + size, next_nominal});
+      const double next_nominal = nominal * (std::floor(p.fraction / nominal + 1e-9) + 1.0);
+      const double target = std::min({1.0, p.fraction + p.size, next_nominal});
       IncrementReport report;
-      report.step = static_cast<int>(s);
+      report.step = p.ramp;
       report.step_name = step.name;
       report.origin = step.origin;
-      report.increment = converged_increments + 1;
+      report.increment = p.converged_increments + 1;
       report.step_fraction = target;
       // Extrapolate within a step or across steps that load the same way (not across a reversal), and not on
-      // the retry of a failed increment: a poor predictor must not cost the whole cut-back sequence.
-      const double extrapolation =
-          model_.options.extrapolate && last_size > 0 && cutbacks == 0 && !idle_step ? (target - fraction) / last_size : 0.0;
+      // the retry of a failed increment: a poor predictor must not cost the whole cut-back sequence. Once a plain
+      // retry has converged where the extrapolated predictor failed, the step goes on without extrapolating: past
+      // a yield knee each extrapolated attempt would otherwise fail again (docs/theory.md).
+      const double extrapolation = model_.options.extrapolate && p.last_size > 0 && cutbacks == 0 && !plain_retry &&
+                                           !p.extrapolation_failed && !idle_step
+                                       ? (target - p.fraction) / p.last_size
+                                       : 0.0;
+      const bool retrying_plain = plain_retry;
+      plain_retry = false;
       if (solve_increment(target, extrapolation, idle_step, ramps, report, on_progress)) {
+        if (retrying_plain) p.extrapolation_failed = true;
         for (BeamElement& e : model_.elements) e.commit();
         bool pattern_changed = false;
         for (Interaction* interaction : model_.interactions()) pattern_changed |= interaction->commit(model_.mesh, state_);
@@ -363,10 +372,9 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
         previous_committed_state_ = committed_state_;
         committed_state_ = state_;
         committed_motion_ = applied_motion_;
-        last_size = target - fraction;
-        fraction = target;
-        ++converged_increments;
-        if (on_increment) on_increment(report);
+        p.last_size = target - p.fraction;
+        p.fraction = target;
+        ++p.converged_increments;
         // Regrow after an easy increment, but not straight back to a size that just failed (each retry that
         // fails costs a whole failed increment): that cap doubles after kEasyIncrementsBeforeRegrowth easy
         // increments at it, never beyond the nominal size.
@@ -374,44 +382,61 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
         // re-evaluate the residual only), and elastoplastic strands converge linearly in about 6 corrections
         // at any increment size (fibres crossing the yield surface), so larger increments cost no more.
         const bool easy = report.corrections <= std::max(2, model_.options.max_iterations / 4);
-        easy_at_cap = easy && size >= largest_size ? easy_at_cap + 1 : 0;
-        if (easy_at_cap >= kEasyIncrementsBeforeRegrowth && largest_size < nominal) {
-          largest_size = std::min(nominal, 2.0 * largest_size);
-          easy_at_cap = 0;
+        p.easy_at_cap = easy && p.size >= p.largest_size ? p.easy_at_cap + 1 : 0;
+        if (p.easy_at_cap >= kEasyIncrementsBeforeRegrowth && p.largest_size < nominal) {
+          p.largest_size = std::min(nominal, 2.0 * p.largest_size);
+          p.easy_at_cap = 0;
         }
-        if (easy) size = std::min(largest_size, 2.0 * size);
+        if (easy) p.size = std::min(p.largest_size, 2.0 * p.size);
         cutbacks = 0;
+        if (p.fraction >= 1.0 - 1e-12) end_step(ramps);
+        // Last: the callback may save a checkpoint, which must hold the progress as it now stands.
+        if (on_increment) on_increment(report);
       } else {
         for (BeamElement& e : model_.elements) e.revert();
         for (Interaction* interaction : model_.interactions()) interaction->revert();
         state_ = committed_state_;
         applied_motion_ = committed_motion_;
         assembler_->assemble(model_, state_, internal_forces_, nullptr);
+        // An extrapolated predictor can lead Newton astray where the plain one converges at the same size
+        // (past a yield knee the last increment's motion is a poor guide): retry once without it before cutting.
+        if (report.extrapolated) {
+          plain_retry = true;
+          ++statistics_.plain_retries;
+          continue;
+        }
         // Also stop when the size falls below what max_cutbacks halvings of the nominal size allow: converging
         // and failing in turn could otherwise shrink the increments without bound (the load stalls at a limit).
         const double smallest = nominal * std::ldexp(1.0, -model_.options.max_cutbacks);
-        if (++cutbacks > model_.options.max_cutbacks || 0.5 * size < smallest * (1.0 - 1e-9)) {
+        if (++cutbacks > model_.options.max_cutbacks || 0.5 * p.size < smallest * (1.0 - 1e-9)) {
           AnalysisStatus status;
           status.converged = false;
-          status.message = "step '" + step.name + "' (" + std::to_string(s + 1) + ") did not converge at load fraction " +
+          status.message = "step '" + step.name + "' (" + std::to_string(p.ramp + 1) + ") did not converge at load fraction " +
                            std::to_string(target) + " after " + std::to_string(model_.options.max_cutbacks) +
                            " increment cut-backs or at the smallest increment, 1/2^" + std::to_string(model_.options.max_cutbacks) +
                            " of the nominal one (last relative residual " + std::to_string(report.residual_norm) + ")";
           return status;
         }
-        largest_size = std::min(largest_size, 0.5 * size);
-        easy_at_cap = 0;
-        size *= 0.5;
+        p.largest_size = std::min(p.largest_size, 0.5 * p.size);
+        p.easy_at_cap = 0;
+        p.size *= 0.5;
       }
     }
-    previous_change.clear();
-    for (const auto& [key, ramp] : ramps) {
-      totals[key] = ramp.second;
-      previous_change[key] = ramp.second - ramp.first;
-    }
-    previous_last_size = last_size;
+    if (p.in_step) end_step(ramps);  // not reached: the last increment closes the step
   }
   return {};
+}
+
+void StaticAnalysis::end_step(const std::map<ActionKey, std::pair<double, double>>& ramps) {
+  Progress& p = progress_;
+  p.previous_change.clear();
+  for (const auto& [key, ramp] : ramps) {
+    p.totals[key] = ramp.second;
+    p.previous_change[key] = ramp.second - ramp.first;
+  }
+  p.previous_last_size = p.last_size;
+  p.in_step = false;
+  ++p.ramp;
 }
 
 }  // namespace strandfem

@@ -22,6 +22,8 @@ struct IncrementReport {
   int corrections = 0;         // Newton corrections (tangent solves) among them
   std::vector<double> residual_history;  // relative residual (max of force and moment ratios) per iteration
   double residual_norm = 0;    // the final relative residual
+  double correction_ratio = 0; // ||last Newton correction|| / ||increment motion|| (the displacement test)
+  bool extrapolated = false;   // started from the extrapolated predictor (see SolverOptions::extrapolate)
 };
 
 // What the solver did: counts and wall time per phase (the linear solver's own figures are in
@@ -32,6 +34,7 @@ struct AnalysisStatistics {
   int krylov_iterations = 0;
   int pattern_rebuilds = 0;    // tangent patterns rebuilt and analyzed again (interaction pairs changed)
   int rejected_extrapolations = 0;  // extrapolated predictors worse than the plain one (not used)
+  int plain_retries = 0;       // failed extrapolated increments repeated at the same size without extrapolation
   double assembly_seconds = 0; // tangent assembly (elements and interactions) for Newton corrections
   double linear_seconds = 0;   // factorizations, solves and GMRES
 };
@@ -59,6 +62,12 @@ class StaticAnalysis {
   const Model& model() const { return model_; }
   std::string linear_solver_name() const { return solver_->name(); }
   const AnalysisStatistics& statistics() const { return statistics_; }
+
+  // Checkpoints: the converged state after the last increment (nodes, element and interaction histories, the
+  // position in the load protocol, the statistics so far). restore_state replaces the initial state; run() then
+  // continues from there.
+  void save_state(ArchiveWriter& out) const;
+  void restore_state(ArchiveReader& in);
   const LinearSolverStatistics& linear_statistics() const { return solver_->statistics(); }
 
  private:
@@ -68,6 +77,23 @@ class StaticAnalysis {
   };
   // extrapolation: multiple of the last converged increment's free motion added to the predictor (0: none).
   // idle_step: no load or motion changes in this step, so its start is already in equilibrium (docs/theory.md).
+  // Where the analysis stands in its load protocol; saved in checkpoints, so that a resumed run goes on with the
+  // increment sizes and predictor it had.
+  struct Progress {
+    int ramp = 0;                 // the ramp (expanded load step) being solved
+    bool in_step = false;         // the ramp has begun (the fields below are its own)
+    double fraction = 0;          // converged load fraction within the ramp
+    double size = 0;              // next increment size (fraction units)
+    double largest_size = 0;      // cap on the size after a failure
+    double last_size = 0;         // last converged increment (0: none, no extrapolation)
+    int easy_at_cap = 0;          // easy increments at the cap since it was set
+    int converged_increments = 0;
+    bool extrapolation_failed = false;  // a plain retry converged where extrapolation failed: no more in this ramp
+    std::map<ActionKey, double> totals;           // action values at the end of the previous ramp
+    std::map<ActionKey, double> previous_change;  // each action's change over the previous ramp
+    double previous_last_size = 0;                // that ramp's last converged increment (its fraction units)
+  };
+  void end_step(const std::map<ActionKey, std::pair<double, double>>& ramps);
   bool solve_increment(double step_fraction, double extrapolation, bool idle_step,
                        const std::map<ActionKey, std::pair<double, double>>& ramps, IncrementReport& report,
                        const std::function<void(const IncrementReport&)>& on_progress);
@@ -91,6 +117,7 @@ class StaticAnalysis {
   double last_correction2_ = 0;
   bool factorization_usable_ = false;  // the last factorization may precondition GMRES on the current pattern
   AnalysisStatistics statistics_;
+  Progress progress_;
 };
 
 }  // namespace strandfem

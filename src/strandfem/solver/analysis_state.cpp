@@ -1,0 +1,84 @@
+// Checkpoints of a static analysis: its converged state and where it stands in the load protocol.
+#include "strandfem/core/archive.hpp"
+#include "strandfem/solver/static_analysis.hpp"
+
+namespace strandfem {
+namespace {
+
+constexpr int kStateVersion = 1;
+
+void save_nodes(ArchiveWriter& out, const std::vector<NodeState>& nodes) {
+  out.value(static_cast<std::uint64_t>(nodes.size()));
+  for (const NodeState& n : nodes) {
+    out.vec3(n.position);
+    out.quaternion(n.rotation);
+  }
+}
+
+void load_nodes(ArchiveReader& in, std::vector<NodeState>& nodes) {
+  in.expect(static_cast<std::uint64_t>(nodes.size()), "the node count");
+  for (NodeState& n : nodes) {
+    n.position = in.vec3();
+    n.rotation = in.quaternion();
+  }
+}
+
+}  // namespace
+
+void StaticAnalysis::save_state(ArchiveWriter& out) const {
+  out.section("analysis");
+  out.value(kStateVersion);
+  out.value(static_cast<std::uint64_t>(model_.elements.size()));
+  out.value(dofs_.equation_count);
+  const Progress& p = progress_;
+  out.value(p.ramp);
+  out.value(p.in_step);
+  out.value(std::array<double, 5>{p.fraction, p.size, p.largest_size, p.last_size, p.previous_last_size});
+  out.value(std::array<int, 2>{p.easy_at_cap, p.converged_increments});
+  out.value(p.extrapolation_failed);
+  out.map(p.totals);
+  out.map(p.previous_change);
+  save_nodes(out, committed_state_);
+  save_nodes(out, previous_committed_state_.empty() ? committed_state_ : previous_committed_state_);
+  out.map(committed_motion_);
+  out.value(statistics_);
+  out.section("elements");
+  for (const BeamElement& e : model_.elements) e.save_history(out);
+  for (const Interaction* interaction : model_.interactions()) interaction->save_state(out);
+  out.section("end");
+}
+
+void StaticAnalysis::restore_state(ArchiveReader& in) {
+  in.section("analysis");
+  if (in.value<int>() != kStateVersion) throw ArchiveError("checkpoint was written by another version of StrandFEM");
+  in.expect(static_cast<std::uint64_t>(model_.elements.size()), "the element count");
+  in.expect(dofs_.equation_count, "the equation count");
+  Progress p;
+  in.value(p.ramp);
+  in.value(p.in_step);
+  const auto sizes = in.value<std::array<double, 5>>();
+  p.fraction = sizes[0], p.size = sizes[1], p.largest_size = sizes[2], p.last_size = sizes[3];
+  p.previous_last_size = sizes[4];
+  const auto counts = in.value<std::array<int, 2>>();
+  p.easy_at_cap = counts[0], p.converged_increments = counts[1];
+  in.value(p.extrapolation_failed);
+  in.map(p.totals);
+  in.map(p.previous_change);
+  load_nodes(in, committed_state_);
+  previous_committed_state_ = committed_state_;
+  load_nodes(in, previous_committed_state_);
+  in.map(committed_motion_);
+  in.value(statistics_);
+  in.section("elements");
+  for (BeamElement& e : model_.elements) e.restore_history(in);
+  for (Interaction* interaction : model_.interactions()) interaction->restore_state(in, model_.mesh, committed_state_);
+  in.section("end");
+  progress_ = p;
+  state_ = committed_state_;
+  applied_motion_ = committed_motion_;
+  rebuild_pattern();  // the interactions' element pairs of the checkpoint
+  --statistics_.pattern_rebuilds;  // not one the uninterrupted run would have made
+  assembler_->assemble(model_, state_, internal_forces_, nullptr);
+}
+
+}  // namespace strandfem
