@@ -309,6 +309,7 @@ void ResultWriter::finish(const StaticAnalysis& analysis, const AnalysisStatus& 
                                   {"pattern_rebuilds", a.pattern_rebuilds},
                                   {"rejected_extrapolations", a.rejected_extrapolations},
                                   {"plain_retries", a.plain_retries},
+                                  {"force_only_acceptances", a.force_only_acceptances},
                                   {"assembly_seconds", a.assembly_seconds},
                                   {"linear_seconds", a.linear_seconds},
                                   {"factorization_seconds", l.factorization_seconds},

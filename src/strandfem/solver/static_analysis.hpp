@@ -24,6 +24,7 @@ struct IncrementReport {
   double residual_norm = 0;    // the final relative residual
   double correction_ratio = 0; // ||last Newton correction|| / ||increment motion|| (the displacement test)
   bool extrapolated = false;   // started from the extrapolated predictor (see SolverOptions::extrapolate)
+  bool force_only = false;     // accepted on the force test alone (a tenfold margin after several corrections)
 };
 
 // What the solver did: counts and wall time per phase (the linear solver's own figures are in
@@ -34,6 +35,7 @@ struct AnalysisStatistics {
   int krylov_iterations = 0;
   int pattern_rebuilds = 0;    // tangent patterns rebuilt and analyzed again (interaction pairs changed)
   int rejected_extrapolations = 0;  // extrapolated predictors worse than the plain one (not used)
+  int force_only_acceptances = 0;  // increments accepted on the force test alone (see IncrementReport::force_only)
   int plain_retries = 0;       // failed extrapolated increments repeated at the same size without extrapolation
   double assembly_seconds = 0; // tangent assembly (elements and interactions) for Newton corrections
   double linear_seconds = 0;   // factorizations, solves and GMRES
