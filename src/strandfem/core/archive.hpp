@@ -33,6 +33,7 @@ class ArchiveWriter {
     value(v.first);
     value(v.second);
   }
+  void value(const std::string& s) { string(s); }
   template <class T>
   void value(const T& v) {
     static_assert(std::is_trivially_copyable_v<T>, "archive values must be trivially copyable");
@@ -80,6 +81,8 @@ class ArchiveReader {
       v.first = value<typename T::first_type>();
       v.second = value<typename T::second_type>();
       return v;
+    } else if constexpr (std::is_same_v<T, std::string>) {
+      return string();
     } else {
       return plain_value<T>();
     }

@@ -72,14 +72,13 @@ nlohmann::json BendingWriter::finish() {
 
 void BendingWriter::save_state(ArchiveWriter& out) const {
   out.section("bending");
-  out.value(static_cast<std::uint64_t>(active_ ? curves_.size() : 0));
+  curves_.save_length(out);
   out.vector(history_);
 }
 
 void BendingWriter::restore_state(ArchiveReader& in) {
   in.section("bending");
-  const auto size = in.value<std::uint64_t>();
-  if (active_) curves_.resume(directory_ / "deflection_curves.csv", size);
+  curves_.resume_from(in, directory_ / "deflection_curves.csv", active_);
   history_ = in.vector<LoadDeflectionPoint>();
 }
 

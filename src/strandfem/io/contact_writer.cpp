@@ -22,23 +22,14 @@ ContactWriter::ContactWriter(std::filesystem::path directory, const CaseDefiniti
 
 void ContactWriter::save_state(ArchiveWriter& out) const {
   out.section("contacts.csv");
-  out.value(static_cast<std::uint64_t>(active(case_) ? csv_.size() : 0));
-  out.value(static_cast<std::uint64_t>(frames_.size()));
-  for (const auto& [time, name] : frames_) {
-    out.value(time);
-    out.string(name);
-  }
+  csv_.save_length(out);
+  out.vector(frames_);
 }
 
 void ContactWriter::restore_state(ArchiveReader& in) {
   in.section("contacts.csv");
-  const auto size = in.value<std::uint64_t>();
-  if (active(case_)) csv_.resume(directory_ / "contacts.csv", size);
-  frames_.resize(in.value<std::uint64_t>());
-  for (auto& [time, name] : frames_) {
-    time = in.value<double>();
-    name = in.string();
-  }
+  csv_.resume_from(in, directory_ / "contacts.csv", active(case_));
+  in.vector(frames_);
 }
 
 void ContactWriter::on_increment(const StaticAnalysis& analysis, const IncrementReport& report, int increment_count,

@@ -67,6 +67,15 @@ std::uintmax_t AppendedFile::size() const {
   return bytes;
 }
 
+void AppendedFile::save_length(ArchiveWriter& out) const {
+  out.value(static_cast<std::uint64_t>(is_open() ? size() : 0));
+}
+
+void AppendedFile::resume_from(ArchiveReader& in, const std::filesystem::path& path, bool written) {
+  const auto length = in.value<std::uint64_t>();
+  if (written) resume(path, length);
+}
+
 void AppendedFile::end_row() {
   errno = 0;
   out_.flush();

@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "strandfem/core/archive.hpp"
+
 namespace strandfem {
 
 // Results could not be written (folder not creatable, disk full, file not writable). Exit code 4 in the program.
@@ -43,6 +45,10 @@ class AppendedFile {
   // from there. OutputError when the file is missing or shorter than that.
   void resume(const std::filesystem::path& path, std::uintmax_t size);
   std::uintmax_t size() const;  // bytes written so far (every row is flushed)
+  // Checkpoints: the length written so far (0 for a file this run does not write, never opened); resume_from
+  // reads it back and, for a file the run writes, resumes there.
+  void save_length(ArchiveWriter& out) const;
+  void resume_from(ArchiveReader& in, const std::filesystem::path& path, bool written);
   bool is_open() const { return out_.is_open(); }
   std::ostream& stream() { return out_; }
   void end_row();

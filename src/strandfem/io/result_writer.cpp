@@ -153,14 +153,10 @@ HistoryRow load_row(ArchiveReader& in) {
 
 void ResultWriter::save_state(ArchiveWriter& out) const {
   out.section("history.csv");
-  out.value(static_cast<std::uint64_t>(history_.size()));
+  history_.save_length(out);
   out.value(static_cast<std::uint64_t>(rows_.size()));
   for (const HistoryRow& r : rows_) save_row(out, r);
-  out.value(static_cast<std::uint64_t>(frames_.size()));
-  for (const auto& [time, name] : frames_) {
-    out.value(time);
-    out.string(name);
-  }
+  out.vector(frames_);
   out.value(increments_seen_);
   out.value(last_written_);
   contacts_.save_state(out);
@@ -170,14 +166,10 @@ void ResultWriter::save_state(ArchiveWriter& out) const {
 
 void ResultWriter::restore_state(ArchiveReader& in) {
   in.section("history.csv");
-  history_.resume(directory_ / "history.csv", in.value<std::uint64_t>());
+  history_.resume_from(in, directory_ / "history.csv", true);
   rows_.resize(in.value<std::uint64_t>());
   for (HistoryRow& r : rows_) r = load_row(in);
-  frames_.resize(in.value<std::uint64_t>());
-  for (auto& [time, name] : frames_) {
-    time = in.value<double>();
-    name = in.string();
-  }
+  in.vector(frames_);
   in.value(increments_seen_);
   in.value(last_written_);
   contacts_.restore_state(in);

@@ -18,13 +18,12 @@ WireWriter::WireWriter(const std::filesystem::path& directory, const CaseDefinit
 
 void WireWriter::save_state(ArchiveWriter& out) const {
   out.section("wires.csv");
-  out.value(static_cast<std::uint64_t>(case_.output.wires ? csv_.size() : 0));
+  csv_.save_length(out);
 }
 
 void WireWriter::restore_state(ArchiveReader& in) {
   in.section("wires.csv");
-  const auto size = in.value<std::uint64_t>();
-  if (case_.output.wires) csv_.resume(directory_ / "wires.csv", size);
+  csv_.resume_from(in, directory_ / "wires.csv", case_.output.wires);
 }
 
 void WireWriter::on_increment(const StaticAnalysis& analysis, const IncrementReport& report, int increment_count,

@@ -76,8 +76,7 @@ void StaticAnalysis::restore_state(ArchiveReader& in) {
   progress_ = p;
   state_ = committed_state_;
   applied_motion_ = committed_motion_;
-  rebuild_pattern();  // the interactions' element pairs of the checkpoint
-  --statistics_.pattern_rebuilds;  // not one the uninterrupted run would have made
+  build_pattern();  // the interactions' element pairs of the checkpoint (not a rebuild the run would count)
   assembler_->assemble(model_, state_, internal_forces_, nullptr);
 }
 

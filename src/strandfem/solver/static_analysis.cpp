@@ -41,9 +41,8 @@ StaticAnalysis::StaticAnalysis(Model& model) : model_(model) {
   if (model_.elements.empty()) model_.build_elements();
   dofs_ = build_dof_map(model_);
   model_.contacts.initialize(model_.mesh, model_.contact_settings);
-  assembler_ = std::make_unique<Assembler>(model_, dofs_);
   solver_ = make_linear_solver(model_.options.linear_solver);
-  analyze();
+  build_pattern();
   for (const MeshNode& n : model_.mesh.nodes) state_.push_back(n.reference);
   committed_state_ = state_;
   // Scales that keep the convergence test meaningful when the reference load is zero.
@@ -94,9 +93,13 @@ bool StaticAnalysis::solve_linear(std::vector<double>& rhs) {
   return true;
 }
 
-void StaticAnalysis::rebuild_pattern() {
+void StaticAnalysis::build_pattern() {
   assembler_ = std::make_unique<Assembler>(model_, dofs_);
   analyze();
+}
+
+void StaticAnalysis::rebuild_pattern() {
+  build_pattern();
   ++statistics_.pattern_rebuilds;
 }
 

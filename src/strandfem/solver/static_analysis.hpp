@@ -102,7 +102,8 @@ class StaticAnalysis {
   void update_slaves();
   void extrapolate_free_motion(double factor);  // adds factor x (committed - previous committed) on free DOFs
   void analyze();                              // symbolic analysis of the current pattern
-  void rebuild_pattern();                      // the interactions' element pairs changed: new pattern, analysis
+  void build_pattern();                        // pattern of the interactions' element pairs, then its analysis
+  void rebuild_pattern();                      // build_pattern() because the pairs changed (counted)
   bool solve_linear(std::vector<double>& rhs);  // rhs in, Newton correction out; false if the solve failed
 
   Model& model_;
