@@ -500,7 +500,8 @@ class CaseParser {
   void parse_solver(const YAML::Node& node) {
     reader_.check_keys(node, "solver", {"force_tolerance", "moment_tolerance", "displacement_tolerance", "max_iterations",
                                         "max_cutbacks", "line_search_cuts", "linear_solver", "threads",
-                                        "krylov_iterations", "krylov_tolerance", "extrapolate"});
+                                        "krylov_iterations", "krylov_tolerance", "extrapolate", "stabilization",
+                                        "stabilization_ramp_off"});
     SolverOptions& o = out_.model.options;
     if (node["force_tolerance"]) o.force_tolerance = reader_.positive(node["force_tolerance"], "solver.force_tolerance", "-");
     if (node["moment_tolerance"]) o.moment_tolerance = reader_.positive(node["moment_tolerance"], "solver.moment_tolerance", "-");
@@ -513,6 +514,13 @@ class CaseParser {
     if (node["krylov_iterations"]) o.krylov_iterations = reader_.integer(node["krylov_iterations"], "solver.krylov_iterations", 0, 200);
     if (node["krylov_tolerance"]) o.krylov_tolerance = reader_.positive(node["krylov_tolerance"], "solver.krylov_tolerance", "-");
     if (node["extrapolate"]) o.extrapolate = reader_.boolean(node["extrapolate"], "solver.extrapolate");
+    if (node["stabilization"]) {
+      o.stabilization = reader_.number(node["stabilization"], "solver.stabilization");
+      if (!(o.stabilization >= 0 && o.stabilization < 1))
+        reader_.fail(node["stabilization"], "solver.stabilization", "expected a fraction of the wires' elastic stiffness in [0, 1)");
+    }
+    if (node["stabilization_ramp_off"])
+      o.stabilization_ramp_off = reader_.boolean(node["stabilization_ramp_off"], "solver.stabilization_ramp_off");
   }
 
   void parse_output(const YAML::Node& node) {
@@ -582,6 +590,8 @@ CaseDefinition load_case(const std::string& path) {
                           {"krylov_iterations", c.model.options.krylov_iterations},
                           {"krylov_tolerance", c.model.options.krylov_tolerance},
                           {"extrapolate", c.model.options.extrapolate},
+                          {"stabilization", c.model.options.stabilization},
+                          {"stabilization_ramp_off", c.model.options.stabilization_ramp_off},
                           {"threads", c.model.options.threads}};
   const ContactSettings& k = c.model.contact_settings;
   c.resolved["contact"] = {{"enabled", k.enabled}, {"friction", k.friction}, {"orthotropy_ratio", k.orthotropy_ratio},

@@ -310,6 +310,12 @@ void ResultWriter::finish(const StaticAnalysis& analysis, const AnalysisStatus& 
                                   {"ordering", l.ordering},
                                   {"factor_entries", l.factor_entries},
                                   {"factorization_flops", l.factorization_flops}};
+  // Abaqus' check on its stabilization: the energy it dissipates against the work done on the model.
+  const EnergyBalance& energy = analysis.energies();
+  summary["energy"] = {{"external_work_Nmm", energy.external_work},
+                       {"stabilization_energy_Nmm", energy.stabilization_energy},
+                       {"stabilization_fraction",
+                        energy.external_work > 0 ? energy.stabilization_energy / energy.external_work : 0.0}};
   summary["contacts"] = ContactWriter::summary(analysis);
   if (bending_.active()) summary["bending"] = bending_.finish();
   summary["configuration"] = case_.resolved;

@@ -5,7 +5,8 @@
 namespace strandfem {
 namespace {
 
-constexpr int kStateVersion = 1;
+// 2: adds the energy balance and the applied loads of the converged state (version 1 is read without them).
+constexpr int kStateVersion = 2;
 
 void save_nodes(ArchiveWriter& out, const std::vector<NodeState>& nodes) {
   out.value(static_cast<std::uint64_t>(nodes.size()));
@@ -42,6 +43,8 @@ void StaticAnalysis::save_state(ArchiveWriter& out) const {
   save_nodes(out, previous_committed_state_.empty() ? committed_state_ : previous_committed_state_);
   out.map(committed_motion_);
   out.value(statistics_);
+  out.value(energies_);
+  out.vector(committed_external_);
   out.section("elements");
   for (const BeamElement& e : model_.elements) e.save_history(out);
   for (const Interaction* interaction : model_.interactions()) interaction->save_state(out);
@@ -50,7 +53,8 @@ void StaticAnalysis::save_state(ArchiveWriter& out) const {
 
 void StaticAnalysis::restore_state(ArchiveReader& in) {
   in.section("analysis");
-  if (in.value<int>() != kStateVersion) throw ArchiveError("checkpoint was written by another version of StrandFEM");
+  const int version = in.value<int>();
+  if (version != kStateVersion && version != 1) throw ArchiveError("checkpoint was written by another version of StrandFEM");
   in.expect(static_cast<std::uint64_t>(model_.elements.size()), "the element count");
   in.expect(dofs_.equation_count, "the equation count");
   Progress p;
@@ -69,6 +73,10 @@ void StaticAnalysis::restore_state(ArchiveReader& in) {
   load_nodes(in, previous_committed_state_);
   in.map(committed_motion_);
   in.value(statistics_);
+  if (version >= 2) {
+    in.value(energies_);
+    in.vector(committed_external_);
+  }
   in.section("elements");
   for (BeamElement& e : model_.elements) e.restore_history(in);
   for (Interaction* interaction : model_.interactions()) interaction->restore_state(in, model_.mesh, committed_state_);
@@ -78,6 +86,9 @@ void StaticAnalysis::restore_state(ArchiveReader& in) {
   applied_motion_ = committed_motion_;
   build_pattern();  // the interactions' element pairs of the checkpoint (not a rebuild the run would count)
   assembler_->assemble(model_, state_, internal_forces_, nullptr);
+  committed_forces_ = internal_forces_;
+  // Version 1 did not keep the applied loads: the converged internal forces balance them at the free DOFs.
+  if (version == 1) committed_external_ = internal_forces_;
 }
 
 }  // namespace strandfem

@@ -145,7 +145,8 @@ void Assembler::add_interactions(const Model& model, const std::vector<NodeState
 }
 
 void Assembler::assemble(Model& model, const std::vector<NodeState>& state, std::vector<double>& nodal_forces,
-                         std::vector<double>* values) {
+                         std::vector<double>* values, const ElementDamping& damping) {
+  const bool damped = damping.stabilization && damping.factor > 0;
   const bool with_tangent = values != nullptr;
   const int element_count = static_cast<int>(model.elements.size());
 #pragma omp parallel for schedule(dynamic, 8)
@@ -154,6 +155,12 @@ void Assembler::assemble(Model& model, const std::vector<NodeState>& state, std:
     std::array<NodeState, 3> local;
     for (int i = 0; i < 3; ++i) local[i] = state[element.nodes()[i]];
     element.evaluate(local, with_tangent, outputs_[k]);
+    if (damped) {
+      std::array<NodeState, 3> converged;
+      for (int i = 0; i < 3; ++i) converged[i] = (*damping.converged)[element.nodes()[i]];
+      damping.stabilization->add(k, local, converged, damping.factor, outputs_[k].residual,
+                                 with_tangent ? &outputs_[k].tangent : nullptr);
+    }
   }
   for (Interaction* interaction : model.interactions()) interaction->evaluate(model.mesh, state, with_tangent);
   const std::size_t node_count = model.mesh.nodes.size();

@@ -6,6 +6,7 @@
 
 #include "strandfem/solver/linear_solver.hpp"
 #include "strandfem/solver/model.hpp"
+#include "strandfem/solver/stabilization.hpp"
 
 namespace strandfem {
 
@@ -21,9 +22,10 @@ class Assembler {
   const SparsePattern& pattern() const { return pattern_; }
 
   // Internal nodal forces (beam elements and contact points) in master space (6 per node: force, moment about the node; tied slaves'
-  // forces moved to their masters) and, when values != nullptr, the tangent on free DOFs.
+  // forces moved to their masters) and, when values != nullptr, the tangent on free DOFs. With damping, each
+  // element also carries the viscous stabilization's force.
   void assemble(Model& model, const std::vector<NodeState>& state, std::vector<double>& nodal_forces,
-                std::vector<double>* values);
+                std::vector<double>* values, const ElementDamping& damping = {});
 
  private:
   void add_interactions(const Model& model, const std::vector<NodeState>& state, std::vector<double>& nodal_forces,

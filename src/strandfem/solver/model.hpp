@@ -26,6 +26,10 @@ struct SolverOptions {
   // Predictor: start each increment of a step (after its first) from the converged state plus the last
   // increment's motion of the free DOFs, scaled to the new size, instead of moving the driven DOFs alone.
   bool extrapolate = true;
+  // Viscous stabilization (ViscousStabilization): damping as a fraction of the elements' elastic stiffness (0: off),
+  // constant over each step or ramped off linearly to zero at the step's end.
+  double stabilization = 0;
+  bool stabilization_ramp_off = true;
   std::string linear_solver = "mumps";    // mumps | umfpack
   int threads = 0;                        // OpenMP threads for element evaluation; 0 = OpenMP default
   void validate() const;                  // throws std::invalid_argument naming the bad option

@@ -45,6 +45,7 @@ StaticAnalysis::StaticAnalysis(Model& model) : model_(model) {
   build_pattern();
   for (const MeshNode& n : model_.mesh.nodes) state_.push_back(n.reference);
   committed_state_ = state_;
+  if (model_.options.stabilization > 0) stabilization_.initialize(model_.elements, state_);
   // Scales that keep the convergence test meaningful when the reference load is zero.
   double stiffest = 0, total_length = 0;
   for (const BeamElement& e : model_.elements) {
@@ -58,6 +59,7 @@ StaticAnalysis::StaticAnalysis(Model& model) : model_(model) {
   for (const NodeState& n : state_) box.extend(n.position);
   model_extent2_ = state_.empty() ? 0.0 : std::max(box.diagonal().squaredNorm(), length_scale_ * length_scale_);
   internal_forces_.assign(6 * state_.size(), 0.0);
+  committed_forces_ = external_ = committed_external_ = internal_forces_;
 }
 
 void StaticAnalysis::analyze() {
@@ -129,7 +131,8 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
                                      const std::function<void(const IncrementReport&)>& on_progress) {
   const SolverOptions& opt = model_.options;
   const std::size_t node_count = state_.size();
-  std::vector<double> external(6 * node_count, 0.0);
+  external_.assign(6 * node_count, 0.0);
+  std::vector<double>& external = external_;
   // Imposed motions: move the driven DOFs to their targets before iterating.
   for (const auto& [key, ramp] : ramps) {
     const double target = ramp.first + step_fraction * (ramp.second - ramp.first);
@@ -157,7 +160,7 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
   };
   // Residual at the current state: rhs = -residual on free DOFs, the relative norm and the force test.
   auto evaluate_residual = [&]() {
-    assembler_->assemble(model_, state_, internal_forces_, nullptr);
+    assembler_->assemble(model_, state_, internal_forces_, nullptr, damping());
     double free_force2 = 0, free_moment2 = 0, ref_force2 = 0, ref_moment2 = 0;
     for (std::size_t node = 0; node < node_count; ++node) {
       if (dofs_.tie_of[node] >= 0) continue;
@@ -293,7 +296,7 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
     ++report.corrections;
     {
       const Timer timer(statistics_.assembly_seconds);
-      assembler_->assemble(model_, state_, internal_forces_, &values_);
+      assembler_->assemble(model_, state_, internal_forces_, &values_, damping());
     }
     if (!solve_linear(rhs)) return false;
     start = state_;
@@ -383,6 +386,8 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
                                        : 0.0;
       const bool retrying_plain = plain_retry;
       plain_retry = false;
+      // Ramped off: the factor falls linearly from its full value at the step's start to zero at its end.
+      stabilization_factor_ = model_.options.stabilization * (model_.options.stabilization_ramp_off ? 1.0 - p.fraction : 1.0);
       if (solve_increment(target, extrapolation, idle_step, ramps, report, on_progress)) {
         if (retrying_plain) p.extrapolation_failed = true;
         if (report.force_only) ++statistics_.force_only_acceptances;
@@ -390,6 +395,7 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
         bool pattern_changed = false;
         for (Interaction* interaction : model_.interactions()) pattern_changed |= interaction->commit(model_.mesh, state_);
         if (pattern_changed) rebuild_pattern();  // element pairs entered or left the pattern
+        add_increment_work();
         previous_committed_state_ = committed_state_;
         committed_state_ = state_;
         committed_motion_ = applied_motion_;
@@ -446,6 +452,27 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
     if (p.in_step) end_step(ramps);  // not reached: the last increment closes the step
   }
   return {};
+}
+
+void StaticAnalysis::add_increment_work() {
+  energies_.stabilization_energy +=
+      stabilization_.dissipated_energy(model_.elements, state_, committed_state_, stabilization_factor_);
+  // Forces conjugate to the motion: reactions where the DOF is driven or supported, applied loads where it is free.
+  double work = 0;
+  for (std::size_t node = 0; node < state_.size(); ++node) {
+    if (dofs_.tie_of[node] >= 0) continue;
+    const Vec3 displacement = state_[node].position - committed_state_[node].position;
+    const Vec3 rotation = rotation_vector_from_quaternion(state_[node].rotation * committed_state_[node].rotation.conjugate());
+    for (int c = 0; c < 6; ++c) {
+      const std::size_t i = 6 * node + c;
+      const bool free = dofs_.equation[node][c] >= 0;
+      const double before = free ? committed_external_[i] : committed_forces_[i], now = free ? external_[i] : internal_forces_[i];
+      work += 0.5 * (before + now) * (c < 3 ? displacement[c] : rotation[c - 3]);
+    }
+  }
+  energies_.external_work += work;
+  committed_forces_ = internal_forces_;
+  committed_external_ = external_;
 }
 
 void StaticAnalysis::end_step(const std::map<ActionKey, std::pair<double, double>>& ramps) {

@@ -8,6 +8,7 @@
 
 #include "strandfem/solver/assembler.hpp"
 #include "strandfem/solver/model.hpp"
+#include "strandfem/solver/stabilization.hpp"
 
 namespace strandfem {
 
@@ -41,6 +42,12 @@ struct AnalysisStatistics {
   double linear_seconds = 0;   // factorizations, solves and GMRES
 };
 
+// Work done on the strand and energy taken by the viscous stabilization, summed over converged increments.
+struct EnergyBalance {
+  double external_work = 0;         // reactions at driven and supported DOFs and applied loads (trapezoidal rule), N mm
+  double stabilization_energy = 0;  // dissipated by the viscous stabilization, N mm
+};
+
 // Result of run(): 0 converged, otherwise a message saying where it stopped.
 struct AnalysisStatus {
   bool converged = true;
@@ -64,6 +71,7 @@ class StaticAnalysis {
   const Model& model() const { return model_; }
   std::string linear_solver_name() const { return solver_->name(); }
   const AnalysisStatistics& statistics() const { return statistics_; }
+  const EnergyBalance& energies() const { return energies_; }
 
   // Checkpoints: the converged state after the last increment (nodes, element and interaction histories, the
   // position in the load protocol, the statistics so far). restore_state replaces the initial state; run() then
@@ -118,6 +126,15 @@ class StaticAnalysis {
   double roundoff_force_ = 0;  // forces below it are round-off of the internal forces (idle steps)
   double model_extent2_ = 0;  // squared diagonal of the reference bounding box
   double last_correction2_ = 0;
+  void add_increment_work();
+  // The stabilization for the assembler: this increment's factor against the last converged state.
+  ElementDamping damping() const { return {&stabilization_, &committed_state_, stabilization_factor_}; }  // the converged increment's external work and stabilization energy into energies_
+  ViscousStabilization stabilization_;
+  double stabilization_factor_ = 0;         // this increment's factor (SolverOptions::stabilization, ramped)
+  std::vector<double> external_;            // applied nodal loads of the current increment (6 per node)
+  std::vector<double> committed_external_;  // and of the last converged one
+  std::vector<double> committed_forces_;    // internal forces of the last converged state
+  EnergyBalance energies_;
   bool factorization_usable_ = false;  // the last factorization may precondition GMRES on the current pattern
   AnalysisStatistics statistics_;
   Progress progress_;
