@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
 
 #include "program_runner.hpp"
 
@@ -40,6 +43,41 @@ TEST(BendingProgram, FrictionlessStrandBendsCloseToEIminWithoutLoop) {
     if (row.at("cycle") == 1) (row.at("returning") == 1 ? back : out)++;
   EXPECT_EQ(out, 4);
   EXPECT_EQ(back, 4);
+}
+
+// With friction too high for any contact point to slide the wires stick: no loop, and a strand far stiffer than
+// EImin that approaches EImax as the stick stiffness grows (default elastic slip 0.5 % of the element length, then
+// ten times stiffer). Measured: secant EI 29.7 and 56.8 N m² against EImax 97.7 and EImin 12.7 N m².
+TEST(BendingProgram, StickingStrandHasNoLoopAndApproachesEImax) {
+  double previous_peak = 0;
+  for (const std::string slip : {"0.005", "0.0005"}) {
+    const auto case_file = std::filesystem::path(::testing::TempDir()) / ("bending_sticking_" + slip + ".yaml");
+    {
+      std::ifstream in(case_path("cases/verification/bending_cycles_sticking.yaml"));
+      std::stringstream text;
+      text << in.rdbuf();
+      std::string yaml = text.str();
+      const std::string key = "normal_smoothing: 1.0e-4";
+      yaml.replace(yaml.find(key), key.size(), key + ", elastic_slip: " + slip);
+      std::ofstream(case_file) << yaml;
+    }
+    const auto results = std::filesystem::path(::testing::TempDir()) / ("strandfem_sticking_" + slip) / "results";
+    const ProgramRun run = run_program("run " + case_file.string() + " -q -o " + results.string(), "sticking_" + slip);
+    ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
+    const auto loops = read_csv(results / "loops.csv");
+    ASSERT_EQ(loops.size(), 1u);
+    const auto& loop = loops[0];
+    const double peak = loop.at("peak_deflection_mm") - loop.at("start_deflection_mm");
+    const double y_max = loop.at("eq31_ei_max_mm"), y_min = loop.at("eq31_ei_min_mm");
+    EXPECT_GT(peak, y_max) << "elastic slip " << slip;
+    EXPECT_LT(peak, 0.6 * y_min) << "elastic slip " << slip;  // far from the full-slip value
+    // Sticking, elastic: no dissipation and no ratchet.
+    EXPECT_LT(loop.at("area_Nmm"), 1e-3 * loop.at("peak_load_N") * peak) << "elastic slip " << slip;
+    EXPECT_NEAR(loop.at("end_deflection_mm"), loop.at("start_deflection_mm"), 1e-3 * peak) << "elastic slip " << slip;
+    // Stiffer stick, stiffer strand: the deflection moves toward the EImax bound.
+    if (previous_peak > 0) EXPECT_LT(peak, 0.7 * previous_peak);
+    previous_peak = peak;
+  }
 }
 
 }  // namespace
