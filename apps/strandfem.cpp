@@ -3,13 +3,17 @@
 #include <chrono>
 #include <cstdlib>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <sstream>
 #include <new>
 #include <omp.h>
 
 #include "strandfem/io/case_file.hpp"
 #include "strandfem/core/archive.hpp"
 #include "strandfem/io/case_run.hpp"
+#include "strandfem/io/case_variant.hpp"
 #include "strandfem/io/output_file.hpp"
 #include "strandfem/post/model_report.hpp"
 
@@ -95,6 +99,65 @@ int run_case_file(const std::string& case_path, const std::string& output_dir, i
   return 0;
 }
 
+// strandfem sweep: a family of cases, each into its own results folder under output_dir, then sweep.csv (one row per
+// variant) and sweep.png (their curves on one plot, scripts/plot_sweep.py). With a key, one case with that key set
+// to each value (the variants' case files are written into output_dir/cases); without, the case files as given.
+// Every variant is read and checked before any is run. Returns 0 when all converged, else the first failure's code.
+int run_sweep(const std::vector<std::string>& cases, const std::string& key, const std::vector<std::string>& values,
+              const std::string& output_dir, int threads, bool quiet) {
+  namespace fs = std::filesystem;
+  struct Variant {
+    std::string name, value, case_file;
+    int exit_code = -1;
+  };
+  std::vector<Variant> variants;
+  if (!key.empty()) {
+    if (cases.size() != 1) throw strandfem::CaseError("sweep --key varies one case, got " + std::to_string(cases.size()));
+    if (values.empty()) throw strandfem::CaseError("sweep --key " + key + ": expected --values v1,v2,...");
+    std::ifstream in(cases[0]);
+    if (!in) throw strandfem::CaseError(cases[0] + ": cannot read the case file");
+    std::stringstream text;
+    text << in.rdbuf();
+    fs::create_directories(fs::path(output_dir) / "cases");
+    for (const std::string& value : values) {
+      Variant v{strandfem::variant_folder_name(key, value), value, ""};
+      v.case_file = (fs::path(output_dir) / "cases" / (v.name + ".yaml")).string();
+      std::ofstream out(v.case_file);
+      out << "# " << cases[0] << " with " << key << " = " << value << " (strandfem sweep)\n"
+          << strandfem::set_case_key(text.str(), key, value);
+      if (!out) throw strandfem::OutputError("cannot write " + v.case_file);
+      variants.push_back(v);
+    }
+  } else {
+    if (!values.empty()) throw strandfem::CaseError("sweep --values needs --key");
+    for (const std::string& c : cases) {
+      Variant v{fs::path(c).stem().string(), "", c};
+      for (const Variant& other : variants)
+        if (other.name == v.name) v.name += "_" + std::to_string(variants.size() + 1);
+      variants.push_back(v);
+    }
+  }
+  for (const Variant& v : variants) strandfem::load_case(v.case_file);  // bad input stops the sweep before it runs
+  int result = 0;
+  for (Variant& v : variants) {
+    if (!quiet) std::cerr << "sweep: " << v.name << "\n";
+    v.exit_code = run_case_file(v.case_file, (fs::path(output_dir) / v.name).string(), threads, true, false, false, false, 0);
+    if (!quiet) std::cerr << "sweep: " << v.name << (v.exit_code == 0 ? " done" : " failed, exit code " + std::to_string(v.exit_code)) << "\n";
+    if (result == 0) result = v.exit_code;
+  }
+  const std::string table = (fs::path(output_dir) / "sweep.csv").string();
+  std::ofstream csv(table);
+  csv << "variant,key,value,case_file,results,exit_code\n";
+  for (const Variant& v : variants)
+    csv << v.name << "," << key << "," << v.value << "," << v.case_file << "," << v.name << "," << v.exit_code << "\n";
+  if (!csv) throw strandfem::OutputError("cannot write " + table);
+  csv.close();
+  const std::string command = std::string("/usr/bin/python3 '") + STRANDFEM_SCRIPTS_DIR + "/plot_sweep.py' '" + output_dir + "' > /dev/null";
+  if (std::system(command.c_str()) != 0) std::cerr << "warning: plotting failed (" << command << ")\n";
+  if (!quiet) std::cerr << "sweep of " << variants.size() << " cases in " << output_dir << " (sweep.csv, sweep.png)\n";
+  return result;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -114,6 +177,15 @@ int main(int argc, char** argv) {
                   "Stop after this many converged increments (of this session), exit code 5; --resume continues")
       ->check(CLI::PositiveNumber);
   run->add_flag("--plots", plots, "Draw the results' figures (PNG, into the results folder; needs python3-matplotlib)");
+  std::vector<std::string> sweep_cases, sweep_values;
+  std::string sweep_key;
+  auto* sweep = app.add_subcommand("sweep", "Run a family of cases (case files, or one case with one key over values) and plot their curves together");
+  sweep->add_option("cases", sweep_cases, "Case files (YAML); with --key, exactly one")->required();
+  sweep->add_option("-o,--output", output_dir, "Folder of the sweep: a results folder per case, sweep.csv, sweep.png");
+  sweep->add_option("--key", sweep_key, "Key to vary, dot-separated (e.g. contact.friction, strand.layers.1.lay_angle)");
+  sweep->add_option("--values", sweep_values, "Values of the key, comma-separated (e.g. 0.5,0.7,0.9)")->delimiter(',');
+  sweep->add_option("-t,--threads", threads, "OpenMP threads for element evaluation (0: default)")->check(CLI::NonNegativeNumber);
+  sweep->add_flag("-q,--quiet", quiet, "No progress lines");
   auto* info = app.add_subcommand("info", "Print model sizes and analytic references as JSON, without solving");
   info->add_option("case", case_path, "Case file (YAML)")->required();
   try {
@@ -133,6 +205,7 @@ int main(int argc, char** argv) {
       }
       return 0;
     }
+    if (sweep->parsed()) return run_sweep(sweep_cases, sweep_key, sweep_values, output_dir, threads, quiet);
     return run_case_file(case_path, output_dir, threads, quiet, verbose, plots, resume, stop_after);
   } catch (const strandfem::CaseError& e) {
     std::cerr << "error: " << e.what() << "\n";

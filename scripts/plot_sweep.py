@@ -1,0 +1,67 @@
+#!/usr/bin/python3
+"""Plots the cases of a `strandfem sweep` folder on one figure, sweep.png:
+
+- bending cases (a transverse load in history.csv): midspan load V against midspan deflection, every cycle;
+- axial cases: axial force against axial strain.
+
+One curve per row of sweep.csv (its variant name in the legend); a variant without results is left out.
+
+Usage: scripts/plot_sweep.py SWEEP_FOLDER
+"""
+import csv
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+
+
+def main(folder):
+    variants = list(csv.DictReader(open(os.path.join(folder, "sweep.csv"))))
+    curves = []
+    for v in variants:
+        path = os.path.join(folder, v["results"], "history.csv")
+        if not os.path.exists(path):
+            continue
+        rows = list(csv.DictReader(open(path)))
+        if rows:
+            curves.append((v["variant"], rows))
+    if not curves:
+        print("no results to plot in", folder)
+        return 1
+    bending = any(abs(float(r["transverse_load_N"])) > 0 for _, rows in curves for r in rows)
+    fig, ax = plt.subplots(figsize=(6.4, 4.6))
+    for name, rows in curves:
+        if bending:
+            # From the end of the tension ramp on: the state before the first transverse increment starts the loop.
+            start = next(i for i, r in enumerate(rows) if abs(float(r["transverse_load_N"])) > 0)
+            part = rows[max(0, start - 1):]
+            x = [float(r["midspan_deflection_mm"]) - float(part[0]["midspan_deflection_mm"]) for r in part]
+            y = [float(r["transverse_load_N"]) for r in part]
+        else:
+            x = [0.0] + [float(r["axial_strain"]) for r in rows]
+            y = [0.0] + [float(r["axial_force_N"]) / 1000 for r in rows]
+        ax.plot(x, y, marker=".", markersize=3, linewidth=1, label=name)
+    if bending:
+        ax.set_xlabel("midspan deflection from the start of bending (mm)")
+        ax.set_ylabel("transverse load V (N)")
+    else:
+        ax.set_xlabel("axial strain")
+        ax.set_ylabel("axial force (kN)")
+    ax.set_title(os.path.basename(os.path.abspath(folder)), fontsize=9)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    out = os.path.join(folder, "sweep.png")
+    fig.savefig(out, dpi=130)
+    print(out)
+    return 0
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 2:
+        print(__doc__)
+        sys.exit(2)
+    sys.exit(main(sys.argv[1]))
