@@ -175,7 +175,7 @@ int main(int argc, char** argv) {
   run->add_flag("--resume", resume, "Continue the run in the results folder from its last converged increment (its checkpoint.bin)");
   run->add_option("--stop-after", stop_after,
                   "Stop after this many converged increments (of this session), exit code 5; --resume continues")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(1, 1000000000));  // PositiveNumber's message prints the double's range, 300 digits
   run->add_flag("--plots", plots, "Draw the results' figures (PNG, into the results folder; needs python3-matplotlib)");
   std::vector<std::string> sweep_cases, sweep_values;
   std::string sweep_key;
