@@ -132,12 +132,11 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
   const SolverOptions& opt = model_.options;
   const std::size_t node_count = state_.size();
   external_.assign(6 * node_count, 0.0);
-  std::vector<double>& external = external_;
   // Imposed motions: move the driven DOFs to their targets before iterating.
   for (const auto& [key, ramp] : ramps) {
     const double target = ramp.first + step_fraction * (ramp.second - ramp.first);
     if (key.kind == NodalAction::kForce) {
-      external[6 * key.node + key.component] += target;
+      external_[6 * key.node + key.component] += target;
       continue;
     }
     const double delta = target - applied_motion_[key];
@@ -165,7 +164,7 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
     for (std::size_t node = 0; node < node_count; ++node) {
       if (dofs_.tie_of[node] >= 0) continue;
       for (int c = 0; c < 6; ++c) {
-        const double f_int = internal_forces_[6 * node + c], f_ext = external[6 * node + c];
+        const double f_int = internal_forces_[6 * node + c], f_ext = external_[6 * node + c];
         const int eq = dofs_.equation[node][c];
         // Reference load: applied loads plus reactions at constrained DOFs.
         const double reference = eq >= 0 ? f_ext : f_int;
