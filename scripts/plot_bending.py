@@ -4,11 +4,19 @@
 - bending_hysteresis.png: midspan load V against deflection for every cycle (history.csv), with the straight
   lines of eq. 3.1 for EImax and EImin from the start of the first cycle to the peak load (loops.csv);
 - bending_deflection.png: the core's deflection along the strand at each cycle's peak load beside eq. 3.2 for
-  EImax and EImin (deflection_curves.csv).
+  EImax and EImin (deflection_curves.csv);
+- bending_wire_forces.png: wire axial force F at the first cycle's peak load and its change dF since V = 0,
+  along the half strand, for the wires near the plane of the load and near the plane across it (paper
+  Figs. 12-13; wire_profiles.csv);
+- bending_contact_forces.png: P, dP, Q, dQ, delta (sliding plus elastic slip) and its change at the crossings
+  between layers, same regions (paper Fig. 14; contact_profiles.csv);
+- bending_status_maps.png: sticking / sliding / slipping of the crossings at the first cycle's peak load over
+  axial and angular position, one panel per layer interface, from the clamp edge (paper Fig. 11).
 
 Usage: scripts/plot_bending.py RESULTS_FOLDER [...]   (PNGs are written into each folder)
 """
 import csv
+import json
 import os
 import sys
 
@@ -70,6 +78,103 @@ def plot_folder(folder):
                 ax.plot(z, [float(r["eq32_ei_min_mm"]) for r in pts], "k:", lw=1, label="EImin (eq. 3.2)")
         written.append(save(fig, ax, "axial position z (mm)", "core deflection at peak V (mm)",
                             os.path.join(folder, "bending_deflection.png")))
+    written += plot_profiles(folder)
+    return written
+
+
+REGIONS = (("vertical", "near the load's plane"), ("horizontal", "near the plane across it"))
+STATUS_COLOURS = {"sticking": "tab:blue", "sliding": "tab:orange", "slipping": "tab:red", "frictionless": "tab:gray"}
+
+
+def half_length(rows_):
+    """The half of the strand from a clamp to midspan (the paper's figures; the results are symmetric)."""
+    return [r for r in rows_ if float(r["z_from_midspan_mm"]) <= 1e-9]
+
+
+def plot_profiles(folder):
+    written = []
+    wires = [r for r in rows(folder, "wire_profiles.csv") if r["cycle"] == "1"]
+    contacts = [r for r in rows(folder, "contact_profiles.csv") if r["cycle"] == "1" and r["kind"] == "point"]
+    if wires:
+        fig, axes = plt.subplots(2, 2, figsize=(10, 6.5), sharex=True)
+        layers = sorted({int(r["layer"]) for r in wires if int(r["layer"]) > 0})
+        for col, (region, title) in enumerate(REGIONS):
+            for layer in layers:
+                pts = [r for r in half_length(wires) if r["plane"] == region and int(r["layer"]) == layer]
+                z = [float(r["z_from_midspan_mm"]) for r in pts]
+                for row, key in enumerate(("axial_force_N", "delta_axial_force_N")):
+                    axes[row][col].plot(z, [float(r[key]) for r in pts], ".", ms=3, label=f"layer {layer}")
+            axes[0][col].set_title(f"wires {title}", fontsize=9)
+            axes[0][col].set_ylabel("F at peak V (N)")
+            axes[1][col].set_ylabel("dF since V = 0 (N)")
+            axes[1][col].set_xlabel("axial position from midspan (mm)")
+            for row in range(2):
+                axes[row][col].grid(alpha=0.3)
+            axes[0][col].legend(fontsize=7)
+        fig.tight_layout()
+        path = os.path.join(folder, "bending_wire_forces.png")
+        fig.savefig(path, dpi=130)
+        plt.close(fig)
+        written.append(path)
+    if contacts:
+        interfaces = sorted({(int(r["layer_a"]), int(r["layer_b"])) for r in contacts})
+        interfaces = sorted({(min(a, b), max(a, b)) for a, b in interfaces})
+        quantities = (("normal_force", "P at peak V (N)"), ("delta_normal_force", "dP (N)"),
+                      ("tangential_force", "Q at peak V (N)"), ("delta_tangential_force", "dQ (N)"),
+                      ("tangential_displacement_mm", "delta at peak V (mm)"),
+                      ("delta_tangential_displacement_mm", "delta since V = 0 (mm)"))
+        fig, axes = plt.subplots(len(quantities), 2, figsize=(10, 13), sharex=True)
+        for col, (region, title) in enumerate(REGIONS):
+            for a, b in interfaces:
+                pts = [r for r in half_length(contacts) if r["plane"] == region and r["map_status"] != "open"
+                       and (min(int(r["layer_a"]), int(r["layer_b"])), max(int(r["layer_a"]), int(r["layer_b"]))) == (a, b)]
+                z = [float(r["z_from_midspan_mm"]) for r in pts]
+                for row, (key, _) in enumerate(quantities):
+                    axes[row][col].plot(z, [float(r[key]) for r in pts], ".", ms=3, label=f"layers {a}-{b}")
+            axes[0][col].set_title(f"crossings {title}", fontsize=9)
+            for row, (_, label) in enumerate(quantities):
+                axes[row][col].set_ylabel(label, fontsize=8)
+                axes[row][col].grid(alpha=0.3)
+            axes[-1][col].set_xlabel("axial position from midspan (mm)")
+            axes[0][col].legend(fontsize=7)
+        fig.tight_layout()
+        path = os.path.join(folder, "bending_contact_forces.png")
+        fig.savefig(path, dpi=130)
+        plt.close(fig)
+        written.append(path)
+
+        summary_path = os.path.join(folder, "summary.json")
+        offset = 0.0
+        if os.path.exists(summary_path):
+            offset = json.load(open(summary_path)).get("bending", {}).get("clamp_edge_offset_mm", 0.0)
+        closed = [r for r in half_length(contacts) if r["map_status"] != "open"]
+        z_end = min(float(r["z_from_midspan_mm"]) - float(r["z_mm"]) for r in contacts)  # the restrained end
+        z_clamp = z_end + offset
+        fig, axes = plt.subplots(len(interfaces), 1, figsize=(8, 2.6 * len(interfaces)), squeeze=False, sharex=True)
+        for ax, (a, b) in zip(axes[:, 0], interfaces):
+            pts = [r for r in closed if (min(int(r["layer_a"]), int(r["layer_b"])), max(int(r["layer_a"]), int(r["layer_b"]))) == (a, b)
+                   and float(r["z_from_midspan_mm"]) >= z_clamp]
+            for status, colour in STATUS_COLOURS.items():
+                sel = [r for r in pts if r["map_status"] == status]
+                if sel:
+                    ax.scatter([float(r["z_from_midspan_mm"]) for r in sel], [float(r["angle_deg"]) % 360 for r in sel], s=6,
+                               c=colour, label=f"{status} ({len(sel)})")
+            ax.axvspan(z_end, z_clamp, color="0.85")
+            ax.axvline(z_clamp, color="k", lw=1)
+            ax.set_xlim(z_end, 0)
+            ax.text(z_clamp, 365, " clamp edge", fontsize=7, va="bottom")
+            ax.set_ylim(0, 360)
+            ax.set_yticks([0, 90, 180, 270, 360])
+            ax.set_ylabel(f"layers {a}-{b}\nangle (deg)", fontsize=8)
+            ax.legend(fontsize=7, loc="upper right", ncol=4)
+            ax.grid(alpha=0.3)
+        axes[-1][0].set_xlabel("axial position from midspan (mm)")
+        fig.suptitle("contact status at the first peak load (slipping: stuck earlier in the loading)", fontsize=9)
+        fig.tight_layout()
+        path = os.path.join(folder, "bending_status_maps.png")
+        fig.savefig(path, dpi=130)
+        plt.close(fig)
+        written.append(path)
     return written
 
 

@@ -1,6 +1,7 @@
 // Requirement: frictional contact converges on multilayer strands (issue 4) with either tangential penalty,
 // the axial slopes match the fixed-end linear strand theory, and bending under tension starts to work.
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <fstream>
@@ -110,6 +111,41 @@ TEST(MultilayerProgram, S32SegmentBendsUnderTensionBetweenTheStiffnessBounds) {
   EXPECT_LT(at_vmax, deflection(bounds.ei_min));
   // Unloaded again: what is left is the hysteresis of slipped wires, less than the deflection at Vmax.
   EXPECT_LT(rows.back().at("midspan_deflection_mm"), at_vmax);
+
+  // Wire axial forces at Vmax against V = 0 (paper Fig. 13): near the load's plane the wires on the side the
+  // strand deflects to are pulled at midspan and pushed at the clamps (a clamped beam's moment changes sign),
+  // and the two sides change by opposite amounts (the tension is held).
+  const auto wires = read_csv(run.output / "results" / "wire_profiles.csv");
+  const auto planes = read_csv_text(run.output / "results" / "wire_profiles.csv", "plane");
+  ASSERT_EQ(wires.size(), planes.size());
+  auto mean_change = [&](double z_from_midspan, double angle) {
+    double sum = 0;
+    int count = 0;
+    for (std::size_t i = 0; i < wires.size(); ++i) {
+      const double a = std::fmod(wires[i].at("angle_deg") + 360.0, 360.0);
+      if (planes[i] == "vertical" && std::abs(wires[i].at("z_from_midspan_mm") - z_from_midspan) <= 6 && std::abs(a - angle) <= 15)
+        sum += wires[i].at("delta_axial_force_N"), ++count;
+    }
+    EXPECT_GT(count, 4) << "z " << z_from_midspan << ", angle " << angle;
+    return sum / count;
+  };
+  const double midspan_top = mean_change(0, 90), midspan_bottom = mean_change(0, 270);
+  const double clamp_top = mean_change(-100, 90), clamp_bottom = mean_change(-100, 270);
+  EXPECT_GT(midspan_top, 0);
+  EXPECT_LT(midspan_bottom, 0);
+  EXPECT_LT(clamp_top, 0);
+  EXPECT_GT(clamp_bottom, 0);
+  EXPECT_LT(std::abs(midspan_top + midspan_bottom), 0.1 * midspan_top);
+  EXPECT_LT(std::abs(clamp_top + clamp_bottom), 0.1 * clamp_bottom);
+  // Paper section 4.2: the inner layer interfaces carry the larger contact forces P and Q.
+  const nlohmann::json summary = nlohmann::json::parse(std::ifstream(run.output / "results" / "summary.json"));
+  const nlohmann::json& interfaces = summary["bending"]["profiles"].at(0)["interfaces"];
+  for (const char* force : {"mean_normal_force", "mean_tangential_force"}) {
+    const double inner = interfaces["point 1-2"][force], middle = interfaces["point 2-3"][force],
+                 outer = interfaces["point 3-4"][force];
+    EXPECT_GT(inner, middle) << force;
+    EXPECT_GT(middle, outer) << force;
+  }
 }
 
 }  // namespace

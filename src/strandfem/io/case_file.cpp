@@ -2,6 +2,8 @@
 #include "strandfem/io/contact_keys.hpp"
 #include "strandfem/io/yaml_document.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <limits>
 #include <map>
@@ -524,7 +526,15 @@ class CaseParser {
   }
 
   void parse_output(const YAML::Node& node) {
-    reader_.check_keys(node, "output", {"every", "vtu", "monitor", "contacts", "contacts_every", "wires", "checkpoint"});
+    reader_.check_keys(node, "output", {"every", "vtu", "monitor", "contacts", "contacts_every", "wires", "checkpoint", "clamp_edge_offset"});
+    if (node["clamp_edge_offset"]) {
+      const double offset = reader_.non_negative(node["clamp_edge_offset"], "output.clamp_edge_offset", "mm");
+      if (!out_.strand) reader_.fail(node["clamp_edge_offset"], "output.clamp_edge_offset", "only strands have clamps");
+      if (offset >= 0.5 * out_.axial_length)
+        reader_.fail(node["clamp_edge_offset"], "output.clamp_edge_offset",
+                     fmt::format("expected a distance below half the strand length ({} mm)", 0.5 * out_.axial_length));
+      out_.output.clamp_edge_offset = offset;
+    }
     if (node["checkpoint"]) out_.output.checkpoint = reader_.boolean(node["checkpoint"], "output.checkpoint");
     if (node["wires"]) out_.output.wires = reader_.boolean(node["wires"], "output.wires");
     if (node["contacts"]) out_.output.contacts = reader_.boolean(node["contacts"], "output.contacts");

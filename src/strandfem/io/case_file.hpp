@@ -19,6 +19,9 @@ struct OutputOptions {
   bool contacts_every_set = false;
   bool wires = true;             // DIR/wires.csv: section results along every wire, at the contact rows' increments
   bool checkpoint = true;        // DIR/checkpoint.bin after every converged increment (strandfem run --resume)
+  // Bending status maps start this far (mm) inside the strand from each restrained end, where the paper
+  // (section 4.1) places the clamp edge: 22 mm for the Cardinal conductor.
+  double clamp_edge_offset = 0;
 };
 
 // A parsed, validated case: the model plus what the outputs need to know about it.

@@ -12,7 +12,8 @@
 namespace strandfem {
 namespace {
 constexpr const char* kMagic = "StrandFEM checkpoint";
-constexpr int kFormatVersion = 1;
+// 2: cyclic strand cases add the bending profiles' state (ProfileWriter); other cases read version 1 alike.
+constexpr int kFormatVersion = 2;
 }  // namespace
 
 std::string case_fingerprint(const CaseDefinition& c) {
@@ -54,7 +55,10 @@ ArchiveReader open_checkpoint(const std::filesystem::path& directory, const Case
   } catch (const ArchiveError&) {
     throw ArchiveError(path.string() + " is not a StrandFEM checkpoint");
   }
-  if (reader.value<int>() != kFormatVersion)
+  const int version = reader.value<int>();
+  bool cyclic = false;
+  for (const LoadStep& s : c.model.steps) cyclic |= s.cycles > 0;
+  if (version != kFormatVersion && !(version == 1 && !(c.strand && cyclic)))
     throw ArchiveError(path.string() + " was written by another version of StrandFEM (checkpoint format differs)");
   if (reader.string() != case_fingerprint(c))
     throw ArchiveError(path.string() + " was written for another case, or this case file changed since: resume needs the same case");

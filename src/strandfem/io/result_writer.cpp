@@ -67,7 +67,8 @@ bool is_result_file_name(std::string name) {
   if (name.size() > partial.size() && name.compare(name.size() - partial.size(), partial.size(), partial) == 0)
     name.resize(name.size() - partial.size());
   for (const char* fixed : {"history.csv", "displacements.csv", "summary.json", "contacts.csv", "wires.csv", "loops.csv",
-                            "deflection_curves.csv", "checkpoint.bin", "bending_hysteresis.png", "bending_deflection.png", "result.pvd", "contacts.pvd"})
+                            "deflection_curves.csv", "wire_profiles.csv", "contact_profiles.csv", "checkpoint.bin", "bending_hysteresis.png", "bending_deflection.png",
+                            "bending_wire_forces.png", "bending_contact_forces.png", "bending_status_maps.png", "result.pvd", "contacts.pvd"})
     if (name == fixed) return true;
   // result_NNNNN.vtu, contacts_NNNNN.vtu: five or more digits.
   for (const std::string prefix : {"result_", "contacts_"}) {
@@ -98,7 +99,7 @@ void take_over(const std::filesystem::path& directory) {
 ResultWriter::ResultWriter(std::filesystem::path directory, const CaseDefinition& c, nlohmann::json model_info, bool resuming)
     : directory_(std::move(directory)), case_(c), model_info_(std::move(model_info)),
       contacts_((resuming ? void() : take_over(directory_), directory_), c, resuming), wires_(directory_, c, resuming),
-      bending_(directory_, c, resuming) {
+      bending_(directory_, c, resuming), profiles_(directory_, c, resuming) {
   nlohmann::json running = model_info_;
   running["status"] = "running";
   running["configuration"] = case_.resolved;
@@ -162,6 +163,7 @@ void ResultWriter::save_state(ArchiveWriter& out) const {
   contacts_.save_state(out);
   wires_.save_state(out);
   bending_.save_state(out);
+  profiles_.save_state(out);
 }
 
 void ResultWriter::restore_state(ArchiveReader& in) {
@@ -175,6 +177,7 @@ void ResultWriter::restore_state(ArchiveReader& in) {
   contacts_.restore_state(in);
   wires_.restore_state(in);
   bending_.restore_state(in);
+  profiles_.restore_state(in);
 }
 
 void ResultWriter::on_increment(const StaticAnalysis& analysis, const IncrementReport& report) {
@@ -190,6 +193,7 @@ void ResultWriter::on_increment(const StaticAnalysis& analysis, const IncrementR
   contacts_.on_increment(analysis, report, increments_seen_, r.load_factor);
   wires_.on_increment(analysis, report, increments_seen_, r.load_factor);
   bending_.on_increment(analysis, report, r.axial_force, r.transverse_load, r.midspan_deflection);
+  profiles_.on_increment(analysis, report);
   last_written_ = false;
   if (case_.output.vtu && increments_seen_ % case_.output.every == 0) {
     write_vtu(analysis, r.load_factor);
@@ -317,7 +321,11 @@ void ResultWriter::finish(const StaticAnalysis& analysis, const AnalysisStatus& 
                        {"stabilization_fraction",
                         energy.external_work > 0 ? energy.stabilization_energy / energy.external_work : 0.0}};
   summary["contacts"] = ContactWriter::summary(analysis);
-  if (bending_.active()) summary["bending"] = bending_.finish();
+  if (bending_.active()) {
+    summary["bending"] = bending_.finish();
+    summary["bending"]["profiles"] = profiles_.summary();
+    summary["bending"]["clamp_edge_offset_mm"] = case_.output.clamp_edge_offset;
+  }
   summary["configuration"] = case_.resolved;
   write_summary(summary);
 }

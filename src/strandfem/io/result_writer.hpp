@@ -11,6 +11,7 @@
 #include "strandfem/io/case_file.hpp"
 #include "strandfem/io/contact_writer.hpp"
 #include "strandfem/io/output_file.hpp"
+#include "strandfem/io/profile_writer.hpp"
 #include "strandfem/io/wire_writer.hpp"
 #include "strandfem/solver/static_analysis.hpp"
 
@@ -68,6 +69,7 @@ class ResultWriter {
   ContactWriter contacts_;
   WireWriter wires_;
   BendingWriter bending_;
+  ProfileWriter profiles_;
   std::vector<HistoryRow> rows_;
   std::vector<std::pair<double, std::string>> frames_;
   int increments_seen_ = 0;
