@@ -84,6 +84,15 @@ TEST(InputChecks, IntegersBeyondTheirRangeAreRefusedNotWrapped) {
   });
 }
 
+// The bending maps' clamp edge lies inside the strand's half length, and only strands have one.
+TEST(InputChecks, ClampEdgeOffsetIsADistanceWithinHalfTheStrand) {
+  expect_exit_2({
+      {"offset_negative", kSeven, {{"steps:", "output: {clamp_edge_offset: -1}\nsteps:"}}, {"output.clamp_edge_offset", ">= 0"}},
+      {"offset_half", kSeven, {{"steps:", "output: {clamp_edge_offset: 1000}\nsteps:"}}, {"output.clamp_edge_offset", "below half the strand length"}},
+      {"offset_beam", kBeam, {{"output: {monitor:", "output: {clamp_edge_offset: 5, monitor:"}}, {"output.clamp_edge_offset", "only strands"}},
+  });
+}
+
 // Class 3: a key given twice in one mapping (YAML keeps one silently) names both lines.
 TEST(InputChecks, DuplicateKeysNameBothLines) {
   expect_exit_2({

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "program_runner.hpp"
 
@@ -42,8 +44,16 @@ TEST(Resume, StoppedAndResumedRunMatchesUninterruptedOne) {
   ASSERT_EQ(second.exit_code, 5) << second.stderr_text;
   const ProgramRun third = run_program(resume, "resume_third");
   ASSERT_EQ(third.exit_code, 0) << third.stderr_text;
-  for (const char* file : {"history.csv", "contacts.csv", "wires.csv", "deflection_curves.csv", "loops.csv"})
+  for (const char* file : {"history.csv", "contacts.csv", "wires.csv", "deflection_curves.csv", "loops.csv", "wire_profiles.csv",
+                           "contact_profiles.csv"})
     expect_same_rows(full.output / "results" / file, results / file);
+  // The status maps need what each loading half saw before the stop (kept in the checkpoint).
+  EXPECT_EQ(read_csv_text(full.output / "results" / "contact_profiles.csv", "map_status"),
+            read_csv_text(results / "contact_profiles.csv", "map_status"));
+  auto profiles = [](const std::filesystem::path& dir) {
+    return nlohmann::json::parse(std::ifstream(dir / "summary.json"))["bending"]["profiles"].dump();
+  };
+  EXPECT_EQ(profiles(full.output / "results"), profiles(results));
 }
 
 TEST(Resume, RefusesAFolderWithoutCheckpoint) {
