@@ -11,6 +11,7 @@
 #include <sstream>
 #include <unordered_set>
 
+#include "strandfem/analysis/strand_builder.hpp"
 #include "strandfem/geometry/beam_line.hpp"
 
 namespace strandfem {
@@ -170,26 +171,15 @@ class CaseParser {
       reader_.fail(mesh_node, mesh_path, "the strand mesh would have " + std::to_string(node_count) + " nodes (or more), beyond the model-size limit of " +
                                              std::to_string(kMaxModelNodes) + " nodes (" + std::to_string(6 * kMaxModelNodes) + " DOFs)" +
                                              (mesh_key ? "" : " with the default 10 mm elements: set mesh.element_length"));
-    out_.model.mesh = mesh_strand(spec, out_.mesh_spec);
-    Mesh& m = out_.model.mesh;
+    strand_ = build_strand_model(spec, out_.mesh_spec, out_.end_type == "free");
+    out_.model.mesh = std::move(strand_.mesh);
+    out_.model.ties = std::move(strand_.ties);
+    out_.model.supports = std::move(strand_.supports);
     check_resolution(0, mesh_node, mesh_path);
-    const MeshWire& core = m.wires[0];
-    out_.start_node = core.nodes.front();
-    out_.end_node = core.nodes.back();
+    out_.start_node = strand_.start_node;
+    out_.end_node = strand_.end_node;
     out_.axial_length = spec.length;
-    out_.monitor_node = core.nodes[core.nodes.size() / 2];
-    // Rigid end planes: every wire's end node tied to the core end node (paper section 2.4).
-    for (std::size_t w = 1; w < m.wires.size(); ++w) {
-      for (const int end : {0, 1}) {
-        const int slave = end == 0 ? m.wires[w].nodes.front() : m.wires[w].nodes.back();
-        const int master = end == 0 ? out_.start_node : out_.end_node;
-        out_.model.ties.push_back(make_rigid_tie(slave, master, m.nodes[slave].reference, m.nodes[master].reference));
-      }
-    }
-    // End z = 0 clamped; end z = L keeps its axial displacement free, and its twist when the ends are free.
-    Support clamp{out_.start_node, {true, true, true, true, true, true}};
-    Support far{out_.end_node, {true, true, false, true, true, out_.end_type == "fixed"}};
-    out_.model.supports = {clamp, far};
+    out_.monitor_node = strand_.monitor_node;
     for (const Support& s : out_.model.supports)
       for (int c = 0; c < 6; ++c)
         if (s.fixed[c]) dof_uses_[{s.node, c}].support = s.node == out_.start_node ? "the clamp at z = 0" : "strand.ends";
@@ -416,20 +406,20 @@ class CaseParser {
     }
   }
 
+  // The strand's loads, as strand_builder turns them into nodal actions.
   void parse_strand_actions(const YAML::Node& s, const std::string& path, int index, LoadStep& step) {
-    const int end = out_.end_node;
     if (s["axial_strain"] && s["axial_force"]) reader_.fail(s, path, "give axial_strain or axial_force, not both");
     if (s["torque"] && s["twist"]) reader_.fail(s, path, "give torque or twist, not both");
     if (s["axial_strain"])
-      add_action(step, index, {NodalAction::kMotion, end, kUz, reader_.number(s["axial_strain"], path + ".axial_strain") * out_.axial_length},
+      add_action(step, index, axial_strain_action(strand_, reader_.number(s["axial_strain"], path + ".axial_strain"), out_.axial_length),
                  s["axial_strain"], path + ".axial_strain");
     if (s["axial_force"])
-      add_action(step, index, {NodalAction::kForce, end, kUz, reader_.number(s["axial_force"], path + ".axial_force")}, s["axial_force"],
+      add_action(step, index, axial_force_action(strand_, reader_.number(s["axial_force"], path + ".axial_force")), s["axial_force"],
                  path + ".axial_force");
     if (s["torque"] || s["twist"]) {
       if (out_.end_type == "fixed") reader_.fail(s, path, "torque and twist need strand.ends: free (fixed ends hold the rotation)");
-      if (s["torque"]) add_action(step, index, {NodalAction::kForce, end, kRz, reader_.number(s["torque"], path + ".torque")}, s["torque"], path + ".torque");
-      else add_action(step, index, {NodalAction::kMotion, end, kRz, reader_.number(s["twist"], path + ".twist") * kDegree}, s["twist"], path + ".twist");
+      if (s["torque"]) add_action(step, index, torque_action(strand_, reader_.number(s["torque"], path + ".torque")), s["torque"], path + ".torque");
+      else add_action(step, index, twist_action(strand_, reader_.number(s["twist"], path + ".twist") * kDegree), s["twist"], path + ".twist");
     }
     if (s["transverse_force"]) {
       const YAML::Node t = s["transverse_force"];
@@ -438,35 +428,19 @@ class CaseParser {
       const double value = reader_.number(reader_.require(t, tp, "value"), tp + ".value");
       YAML::Node selector;
       selector["core_z"] = reader_.require(t, tp, "z");
-      const int node = node_at(selector, tp);
+      TransverseLoad load{node_at(selector, tp), value, Vec3::UnitY()};
       // through: core (the load acts on the core node alone and reaches the other layers through contact) or
       // section (every wire's node at that z is tied rigidly to the core node, like a loading clamp).
       if (t["through"] && reader_.choice(t["through"], tp + ".through", {"core", "section"}) == "section")
-        add_rigid_section(node);
-      Vec3 direction = Vec3::UnitY();
+        add_rigid_section(out_.model.mesh, load.node, out_.model.ties);
       if (t["direction"]) {
         const auto d = reader_.numbers(t["direction"], tp + ".direction", 3);
-        direction = Vec3(d[0], d[1], d[2]);
-        if (std::abs(direction.z()) > 1e-12 || direction.norm() == 0)
+        load.direction = Vec3(d[0], d[1], d[2]);
+        if (std::abs(load.direction.z()) > 1e-12 || load.direction.norm() == 0)
           reader_.fail(t["direction"], tp + ".direction", "expected a non-zero direction perpendicular to the strand axis (z = 0)");
-        direction.normalize();
+        load.direction.normalize();
       }
-      for (int c = 0; c < 2; ++c)
-        if (direction[c] != 0) add_action(step, index, {NodalAction::kForce, node, c, value * direction[c]}, t, tp);
-    }
-  }
-
-  // Ties the node nearest the core node's z on every other wire to the core node (once per core node).
-  void add_rigid_section(int core_node) {
-    Mesh& m = out_.model.mesh;
-    const double z = m.nodes[core_node].reference.position.z();
-    for (std::size_t w = 1; w < m.wires.size(); ++w) {
-      int nearest = m.wires[w].nodes.front();
-      for (const int n : m.wires[w].nodes)
-        if (std::abs(m.nodes[n].reference.position.z() - z) < std::abs(m.nodes[nearest].reference.position.z() - z)) nearest = n;
-      bool tied = false;
-      for (const RigidTie& t : out_.model.ties) tied |= t.slave == nearest;
-      if (!tied) out_.model.ties.push_back(make_rigid_tie(nearest, core_node, m.nodes[nearest].reference, m.nodes[core_node].reference));
+      for (const NodalAction& a : transverse_actions(load)) add_action(step, index, a, t, tp);
     }
   }
 
@@ -549,6 +523,7 @@ class CaseParser {
 
   YamlReader reader_;
   CaseDefinition& out_;
+  StrandModelParts strand_;  // strands: the built parts' node numbers (the mesh, ties and supports move to out_.model)
   std::map<std::string, Material> materials_;
   std::map<std::string, int> hubs_;
   std::unordered_set<int> hub_linked_;  // nodes already tied to a hub (checked per link in O(1))
