@@ -86,6 +86,19 @@ REGIONS = (("vertical", "near the load's plane"), ("horizontal", "near the plane
 STATUS_COLOURS = {"sticking": "tab:blue", "sliding": "tab:orange", "slipping": "tab:red", "frictionless": "tab:gray"}
 
 
+def save_figure(fig, path):
+    fig.tight_layout()
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
+    return path
+
+
+def interface(row):
+    """The layer pair of a contact row, inner layer first."""
+    a, b = int(row["layer_a"]), int(row["layer_b"])
+    return min(a, b), max(a, b)
+
+
 def half_length(rows_):
     """The half of the strand from a clamp to midspan (the paper's figures; the results are symmetric)."""
     return [r for r in rows_ if float(r["z_from_midspan_mm"]) <= 1e-9]
@@ -111,14 +124,9 @@ def plot_profiles(folder):
             for row in range(2):
                 axes[row][col].grid(alpha=0.3)
             axes[0][col].legend(fontsize=7)
-        fig.tight_layout()
-        path = os.path.join(folder, "bending_wire_forces.png")
-        fig.savefig(path, dpi=130)
-        plt.close(fig)
-        written.append(path)
+        written.append(save_figure(fig, os.path.join(folder, "bending_wire_forces.png")))
     if contacts:
-        interfaces = sorted({(int(r["layer_a"]), int(r["layer_b"])) for r in contacts})
-        interfaces = sorted({(min(a, b), max(a, b)) for a, b in interfaces})
+        interfaces = sorted({interface(r) for r in contacts})
         quantities = (("normal_force", "P at peak V (N)"), ("delta_normal_force", "dP (N)"),
                       ("tangential_force", "Q at peak V (N)"), ("delta_tangential_force", "dQ (N)"),
                       ("tangential_displacement_mm", "delta at peak V (mm)"),
@@ -126,8 +134,8 @@ def plot_profiles(folder):
         fig, axes = plt.subplots(len(quantities), 2, figsize=(10, 13), sharex=True)
         for col, (region, title) in enumerate(REGIONS):
             for a, b in interfaces:
-                pts = [r for r in half_length(contacts) if r["plane"] == region and r["map_status"] != "open"
-                       and (min(int(r["layer_a"]), int(r["layer_b"])), max(int(r["layer_a"]), int(r["layer_b"]))) == (a, b)]
+                pts = [r for r in half_length(contacts)
+                       if r["plane"] == region and r["map_status"] != "open" and interface(r) == (a, b)]
                 z = [float(r["z_from_midspan_mm"]) for r in pts]
                 for row, (key, _) in enumerate(quantities):
                     axes[row][col].plot(z, [float(r[key]) for r in pts], ".", ms=3, label=f"layers {a}-{b}")
@@ -137,11 +145,7 @@ def plot_profiles(folder):
                 axes[row][col].grid(alpha=0.3)
             axes[-1][col].set_xlabel("axial position from midspan (mm)")
             axes[0][col].legend(fontsize=7)
-        fig.tight_layout()
-        path = os.path.join(folder, "bending_contact_forces.png")
-        fig.savefig(path, dpi=130)
-        plt.close(fig)
-        written.append(path)
+        written.append(save_figure(fig, os.path.join(folder, "bending_contact_forces.png")))
 
         summary_path = os.path.join(folder, "summary.json")
         offset = 0.0
@@ -152,8 +156,7 @@ def plot_profiles(folder):
         z_clamp = z_end + offset
         fig, axes = plt.subplots(len(interfaces), 1, figsize=(8, 2.6 * len(interfaces)), squeeze=False, sharex=True)
         for ax, (a, b) in zip(axes[:, 0], interfaces):
-            pts = [r for r in closed if (min(int(r["layer_a"]), int(r["layer_b"])), max(int(r["layer_a"]), int(r["layer_b"]))) == (a, b)
-                   and float(r["z_from_midspan_mm"]) >= z_clamp]
+            pts = [r for r in closed if interface(r) == (a, b) and float(r["z_from_midspan_mm"]) >= z_clamp]
             for status, colour in STATUS_COLOURS.items():
                 sel = [r for r in pts if r["map_status"] == status]
                 if sel:
@@ -170,11 +173,7 @@ def plot_profiles(folder):
             ax.grid(alpha=0.3)
         axes[-1][0].set_xlabel("axial position from midspan (mm)")
         fig.suptitle("contact status at the first peak load (slipping: stuck earlier in the loading)", fontsize=9)
-        fig.tight_layout()
-        path = os.path.join(folder, "bending_status_maps.png")
-        fig.savefig(path, dpi=130)
-        plt.close(fig)
-        written.append(path)
+        written.append(save_figure(fig, os.path.join(folder, "bending_status_maps.png")))
     return written
 
 
