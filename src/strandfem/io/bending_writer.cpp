@@ -10,8 +10,7 @@ namespace strandfem {
 
 BendingWriter::BendingWriter(const std::filesystem::path& directory, const CaseDefinition& c, bool resuming)
     : directory_(directory), case_(c) {
-  if (!c.strand) return;
-  for (const LoadStep& s : c.model.steps) active_ |= s.cycles > 0;
+  active_ = has_cyclic_strand_step(c);
   if (!active_) return;
   const BendingStiffnessBounds bounds = bending_stiffness_bounds(*c.strand);
   ei_max_ = bounds.ei_max;

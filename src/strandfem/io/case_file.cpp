@@ -538,6 +538,13 @@ class CaseParser {
 
 }  // namespace
 
+bool has_cyclic_strand_step(const CaseDefinition& c) {
+  if (!c.strand) return false;
+  for (const LoadStep& s : c.model.steps)
+    if (s.cycles > 0) return true;
+  return false;
+}
+
 CaseDefinition load_case(const std::string& path) {
   const YAML::Node root = load_yaml_document(path);
   if (!root.IsMap()) throw CaseError(path + ": expected a YAML mapping at the top level");

@@ -45,4 +45,7 @@ struct CaseDefinition {
 // Reads and validates a case file; throws CaseError naming the key and the expected value.
 CaseDefinition load_case(const std::string& path);
 
+// A strand bent in cycles: a strand case with a cyclic step (its bending results and profiles are written).
+bool has_cyclic_strand_step(const CaseDefinition& c);
+
 }  // namespace strandfem

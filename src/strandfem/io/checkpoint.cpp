@@ -56,9 +56,7 @@ ArchiveReader open_checkpoint(const std::filesystem::path& directory, const Case
     throw ArchiveError(path.string() + " is not a StrandFEM checkpoint");
   }
   const int version = reader.value<int>();
-  bool cyclic = false;
-  for (const LoadStep& s : c.model.steps) cyclic |= s.cycles > 0;
-  if (version != kFormatVersion && !(version == 1 && !(c.strand && cyclic)))
+  if (version != kFormatVersion && !(version == 1 && !has_cyclic_strand_step(c)))
     throw ArchiveError(path.string() + " was written by another version of StrandFEM (checkpoint format differs)");
   if (reader.string() != case_fingerprint(c))
     throw ArchiveError(path.string() + " was written for another case, or this case file changed since: resume needs the same case");

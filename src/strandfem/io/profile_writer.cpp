@@ -10,15 +10,13 @@ namespace strandfem {
 
 ProfileWriter::ProfileWriter(const std::filesystem::path& directory, const CaseDefinition& c, bool resuming)
     : directory_(directory), case_(c) {
-  if (!c.strand) return;
-  Vec3 load = Vec3::Zero();
-  for (const LoadStep& s : c.model.steps) {
-    if (s.cycles <= 0) continue;
-    active_ = true;
-    for (const NodalAction& a : s.actions)
-      if (a.kind == NodalAction::kForce && a.component < 2) load[a.component] += a.value;
-  }
+  active_ = has_cyclic_strand_step(c);
   if (!active_) return;
+  Vec3 load = Vec3::Zero();
+  for (const LoadStep& s : c.model.steps)
+    if (s.cycles > 0)
+      for (const NodalAction& a : s.actions)
+        if (a.kind == NodalAction::kForce && a.component < 2) load[a.component] += a.value;
   if (std::hypot(load.x(), load.y()) > 0) load_angle_degrees_ = std::atan2(load.y(), load.x()) * 180.0 / std::numbers::pi;
   if (resuming) return;
   wires_.open(directory / "wire_profiles.csv");

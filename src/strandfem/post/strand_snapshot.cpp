@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "strandfem/contact/contact_kinematics.hpp"
 #include "strandfem/post/wire_results.hpp"
 
 namespace strandfem {
@@ -25,7 +26,7 @@ StrandSnapshot take_strand_snapshot(const Model& model) {
     const ContactResponse& r = contacts.responses()[i];
     const MeshElement& e = mesh.elements[mesh.wires[p.wire_a].elements[p.element_a]];
     const double xi = p.kind == ContactKind::kLine ? p.xi : r.xi;
-    const std::array<double, 3> n = {0.5 * xi * (xi - 1.0), 1.0 - xi * xi, 0.5 * xi * (xi + 1.0)};
+    const auto n = centerline_shape(xi);
     Vec3 x = Vec3::Zero();
     for (int k = 0; k < 3; ++k) x += n[k] * mesh.nodes[e.nodes[k]].reference.position;
     ContactSample c;
