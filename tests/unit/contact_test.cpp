@@ -252,6 +252,49 @@ TEST(ContactTangent, HeldStickAndHeldSlip) {
   EXPECT_NEAR(r.friction.normalized().dot(in_plane), 1.0, 1e-12);
 }
 
+// Under the elastic-slip law a held slip lies along the trial force plus kHeldSlipBlend times the held
+// direction on the cone (exact tangent too), so a sliding point resists motion across its slip direction:
+// with the held direction alone, an outer wire whose crossings all slide could swing sideways freely within
+// a Newton correction (S32 under bending, docs/theory.md).
+TEST(ContactForceLaw, HeldSlipTurnsWithSidewaysMotionUnderTheElasticSlipLaw) {
+  PairFixture f(0.5, 1.8);
+  const Vec3 axis = Vec3(1.0, 0.3, 0.2).normalized();
+  ContactPoint p = make_point(ContactKind::kPoint);
+  p.mu2 = 0.15;
+  p.allowed_slip = 0.02;
+  set_stick(p, f, 0.05);
+  const ContactResponse plain = response_at(p, f, false, axis);
+  ASSERT_EQ(plain.status, ContactStatus::kSlip);
+  const Vec3 friction_direction = plain.friction.normalized();
+  const Vec3 held_direction = Eigen::AngleAxisd(0.3, plain.normal) * friction_direction;
+  p.friction_mode = FrictionMode::kHeldSlip;
+  p.slip_direction = {held_direction.x(), held_direction.y(), held_direction.z()};
+  EXPECT_LT(tangent_error(p, f, axis, ContactStatus::kSlip), 1e-6);
+  const ContactResponse r = response_at(p, f, false, axis);
+  EXPECT_NEAR(std::hypot(r.q1 / p.mu1, r.q2 / p.mu2), r.normal_force, 1e-9 * r.normal_force);
+  const Vec3 n = r.normal, d1 = (axis - axis.dot(n) * n).normalized(), d2 = d1.cross(n);
+  const Vec3 held = held_direction - n.dot(held_direction) * n;
+  const double held_on_cone = std::hypot(held.dot(d1) / p.mu1, held.dot(d2) / p.mu2);
+  const Vec3 expected = r.trial_friction + kHeldSlipBlend * r.normal_force / held_on_cone * held;
+  EXPECT_NEAR(r.friction.normalized().dot(expected.normalized()), 1.0, 1e-12);
+  // Held along the force itself, then wire b moved across it by 1e-5 mm: the force turns.
+  p.slip_direction = {friction_direction.x(), friction_direction.y(), friction_direction.z()};
+  p.mu2 = p.mu1;
+  const ContactResponse before = response_at(p, f, false, axis);
+  const Vec3 across = before.normal.cross(before.friction).normalized();
+  Vector36 motion = Vector36::Zero();
+  for (int node = 3; node < 6; ++node)
+    for (int c = 0; c < 3; ++c) motion[6 * node + c] = 1e-5 * across[c];
+  const ContactResponse after = response_at(p, f, motion, false, axis);
+  const double stiffness_across = std::abs((after.friction - before.friction).dot(across)) / 1e-5;
+  // The plain return's value is mu P k_t / |trial| with k_t = mu P / allowed_slip; the blend keeps
+  // |trial| / (|trial| + 0.5 mu P) of it.
+  const double k_t = p.mu1 * before.normal_force / p.allowed_slip;
+  const double trial = before.trial_friction.norm(), cone = p.mu1 * before.normal_force;
+  const double expected_across = cone * k_t / (trial + kHeldSlipBlend * cone);
+  EXPECT_NEAR(stiffness_across, expected_across, 0.05 * expected_across);
+}
+
 TEST(ContactForceLaw, SlipForceLiesOnTheFrictionEllipse) {
   PairFixture f(M_PI / 2, 1.8);
     const Vec3 axis = Vec3(1.0, 0.3, 0.2).normalized();

@@ -24,6 +24,13 @@ struct FrictionLaw {
   V3<double> slip_direction{0.0, 0.0, 0.0};  // held slip: unit direction of the friction force
 };
 
+// Held slip under the elastic-slip law: the force lies along the trial force plus this multiple of the held
+// direction on the cone. The held direction alone has no stiffness across the slip, so an outer wire whose
+// crossings all slide could swing sideways freely within a Newton correction (S32 under bending); the trial
+// alone (the plain return) turns over when the trial passes near zero. Under eq. 2.6 (allowed_slip = 0) the
+// trial is orders of magnitude beyond the cone and its direction is round-off: the held direction alone.
+constexpr double kHeldSlipBlend = 0.5;
+
 template <class T>
 struct FrictionForce {
   V3<T> force{};        // friction force on the slave (per length for line contacts)
@@ -60,12 +67,19 @@ FrictionForce<T> friction_force(const FrictionLaw& law, const V3<T>& n, const V3
   const T held_measure2 = measure2(held1, held2);
   T factor(0.0);  // Q = factor * (trial or held direction)
   if (law.mode == FrictionMode::kHeldSlip && value_of(held_measure2) > 1e-12) {
-    factor = P / sqrt(held_measure2);
-    f.force = scale(factor, held_in_plane);
-    f.q1 = factor * held1;
-    f.q2 = factor * held2;
-    f.slipping = true;
-    return f;
+    // Elastic-slip law: along the trial force plus kHeldSlipBlend times the held direction on the cone.
+    const double blend = law.allowed_slip > 0 ? kHeldSlipBlend : 0.0;
+    const V3<T> w = blend > 0 ? add(f.trial, scale(blend * P / sqrt(held_measure2), held_in_plane)) : held_in_plane;
+    const T w1 = dot(w, d1), w2 = dot(w, d2);
+    const T w_measure2 = measure2(w1, w2);
+    if (value_of(w_measure2) > 1e-12 * value_of(held_measure2)) {
+      factor = P / sqrt(w_measure2);
+      f.force = scale(factor, w);
+      f.q1 = factor * w1;
+      f.q2 = factor * w2;
+      f.slipping = true;
+      return f;
+    }
   }
   if (law.mode != FrictionMode::kHeldStick && pressure <= 0.0) {
     // An active point in tension (only during Newton iterations) carries no friction.
