@@ -58,21 +58,20 @@ FrictionForce<T> friction_force(const FrictionLaw& law, const V3<T>& n, const V3
   const T trial_measure2 = measure2(trial1, trial2);
   const double pressure = value_of(P);
   if (value_of(trial_measure2) > 0.0) f.slip_ratio = pressure / std::sqrt(value_of(trial_measure2));
-  // Held slip: the force keeps the direction the slip started with (projected on the current contact
-  // plane), Q = P d / |d|_mu. Smooth, unlike P Q_tr / |Q_tr|_mu, whose direction turns over when Q_tr passes
-  // near zero and sets Newton cycling; ContactSet checks it at convergence.
+  // Held slip: the force keeps a direction w on the current contact plane, Q = P w / |w|_mu. Under eq. 2.6, w is
+  // the direction the slip started with, d (projected on the plane); under the elastic-slip law it turns with
+  // the trial force (kHeldSlipBlend). Smooth, unlike P Q_tr / |Q_tr|_mu, whose direction turns over when Q_tr
+  // passes near zero and sets Newton cycling; ContactSet checks it at convergence.
   const V3<T> held{T(law.slip_direction[0]), T(law.slip_direction[1]), T(law.slip_direction[2])};
   const V3<T> held_in_plane = sub(held, scale(dot(n, held), n));
-  const T held1 = dot(held_in_plane, d1), held2 = dot(held_in_plane, d2);
-  const T held_measure2 = measure2(held1, held2);
+  const T held_measure2 = measure2(dot(held_in_plane, d1), dot(held_in_plane, d2));
   T factor(0.0);  // Q = factor * (trial or held direction)
   if (law.mode == FrictionMode::kHeldSlip && value_of(held_measure2) > 1e-12) {
-    // Elastic-slip law: along the trial force plus kHeldSlipBlend times the held direction on the cone.
-    const double blend = law.allowed_slip > 0 ? kHeldSlipBlend : 0.0;
-    const V3<T> w = blend > 0 ? add(f.trial, scale(blend * P / sqrt(held_measure2), held_in_plane)) : held_in_plane;
+    const V3<T> w = law.allowed_slip > 0 ? add(f.trial, scale(kHeldSlipBlend * P / sqrt(held_measure2), held_in_plane))
+                                         : held_in_plane;
     const T w1 = dot(w, d1), w2 = dot(w, d2);
     const T w_measure2 = measure2(w1, w2);
-    if (value_of(w_measure2) > 1e-12 * value_of(held_measure2)) {
+    if (value_of(w_measure2) > 1e-12 * value_of(held_measure2)) {  // w vanishes only where the slip reverses
       factor = P / sqrt(w_measure2);
       f.force = scale(factor, w);
       f.q1 = factor * w1;
