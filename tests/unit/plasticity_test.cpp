@@ -14,9 +14,10 @@
 namespace strandfem {
 namespace {
 
-Material steel(double tangent_modulus) {
+// The closed forms below are in engineering stress and strain.
+Material steel(double tangent_modulus, StressMeasure measure = StressMeasure::engineering) {
   Material m{188000, 0.3, 0, "steel"};
-  m.plasticity = BilinearHardening{1540, tangent_modulus};
+  m.plasticity = BilinearHardening{1540, tangent_modulus, measure};
   return m;
 }
 
@@ -92,6 +93,61 @@ TEST(FibrePlasticity, ConsistentTangentIsTheFiniteDifferenceOfTheReturn) {
     EXPECT_LT((fd - r.tangent).norm(), 1e-6 * r.tangent.norm()) << "strain " << strain.transpose();
     // The returned stress lies on the moved yield surface.
     if (r.yielding) EXPECT_NEAR(von_mises(r.stress - trial.back_stress), 1540.0, 1e-8 * 1540.0);
+  }
+  EXPECT_GE(plastic_cases, 2);
+}
+
+// True-stress law: the bilinear law holds between true stress and logarithmic strain, and the section
+// integrates true stress over the current area of an incompressible fibre, tau / (1 + eps) per reference area.
+TEST(FibrePlasticity, TrueStressLawIsBilinearInLogarithmicStrainOverTheCurrentArea) {
+  const Material m = steel(5500, StressMeasure::true_stress);
+  FibrePlasticState state;
+  double max_error = 0;
+  for (int i = 1; i <= 70; ++i) {  // monotonic tension to eps = 0.07 (the 120-wire strand's last strain)
+    const double strain = 0.001 * i;
+    FibrePlasticState next;
+    const FibreResponse r = fibre_response(Vec3(strain, 0, 0), m, state, next);
+    state = next;
+    const double log_strain = std::log1p(strain);
+    const double true_stress = bilinear_kinematic_stress({log_strain}, 188000, 5500, 1540);
+    max_error = std::max(max_error, std::abs(r.material_stress[0] - true_stress));
+    EXPECT_NEAR(r.stress[0], true_stress / (1 + strain), 1e-9 * 1540.0) << "strain " << strain;
+  }
+  EXPECT_LT(max_error, 1e-6 * 1540.0);
+  // At 7 % the section stress is 7.2 % under the engineering law with the same (sigma_y, Et).
+  FibrePlasticState none, scratch;
+  const double engineering = fibre_response(Vec3(0.07, 0, 0), steel(5500), none, scratch).stress[0];
+  EXPECT_GT(state.equivalent_plastic_strain, 0.05);
+  FibrePlasticState fresh;
+  const double true_measure = fibre_response(Vec3(0.07, 0, 0), m, none, fresh).stress[0];
+  EXPECT_NEAR(true_measure / engineering, (1540 + 5500 * (std::log1p(0.07) - 1540 / 188000.0)) /
+                                              (1540 + 5500 * (0.07 - 1540 / 188000.0)) / 1.07, 1e-9);
+  // The wire section under uniform stretch carries that stress over its reference area.
+  const FibreSection section(SectionGeometry::circle(3.73, m.poisson_ratio), m);
+  SectionHistory committed = section.initial_history(), trial;
+  const SectionResponse stretched = section.evaluate(Vec6(0.07, 0, 0, 0, 0, 0), committed, trial);
+  EXPECT_NEAR(stretched.resultants[0], section.geometry().area * true_measure, 1e-9 * stretched.resultants[0]);
+}
+
+TEST(FibrePlasticity, TrueStressTangentIsTheFiniteDifferenceOfTheResponse) {
+  const Material m = steel(5500, StressMeasure::true_stress);
+  FibrePlasticState committed;
+  committed.plastic_strain = Vec3(0.02, -0.001, 0.0005);
+  committed.back_stress = Vec3(90, -10, 5);
+  int plastic_cases = 0;
+  for (const Vec3& strain : {Vec3(0.045, 0.001, -0.002), Vec3(0.01, 0.008, 0.001), Vec3(0.03, -0.0005, 0.0002)}) {
+    FibrePlasticState trial;
+    const FibreResponse r = fibre_response(strain, m, committed, trial);
+    plastic_cases += r.yielding;
+    Mat3 fd;
+    const double h = 1e-9;
+    for (int k = 0; k < 3; ++k) {
+      FibrePlasticState scratch;
+      const Vec3 d = h * Vec3::Unit(k);
+      fd.col(k) = (fibre_response(strain + d, m, committed, scratch).stress -
+                   fibre_response(strain - d, m, committed, scratch).stress) / (2 * h);
+    }
+    EXPECT_LT((fd - r.tangent).norm(), 1e-6 * r.tangent.norm()) << "strain " << strain.transpose();
   }
   EXPECT_GE(plastic_cases, 2);
 }

@@ -124,6 +124,9 @@ TEST(InputChecks, ContradictoryAndNonPhysicalValuesAreRefused) {
       {"tiny_beam", kBeam, {{"end: [100, 0, 0]", "end: [1.0e-9, 0, 0]"}}, {"beams[0].elements", "round-off"}},
       {"huge_modulus", kSeven, {{"E: 188000", "E: 1e300"}}, {"materials.steel.E", "1e15"}},
       {"infinite_force", kBeam, {{"9869.604401089358", ".inf"}}, {"steps[0].forces[0].moment[2]", "finite"}},
+      {"stress_measure_nominal", "cases/paper/seven_wire_plastic_fixed.yaml",
+       {{"stress_measure: true_stress", "stress_measure: nominal"}},
+       {"materials.steel.plasticity.stress_measure", "true_stress", "engineering"}},
   });
 }
 

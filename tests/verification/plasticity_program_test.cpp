@@ -70,8 +70,8 @@ TEST(PlasticityProgram, SevenWirePastYieldAgainstTable2) {
   }
 }
 
-// Yield onset in steps of 2e-5: the core first, at sigma_y / E = 0.00819 (paper: "near 0.0082"), the helical
-// wires after it.
+// Yield onset in steps of 2e-5: the core first, where its logarithmic strain reaches sigma_y / E (the law is in
+// true stress), at eps = exp(sigma_y / E) - 1 = 0.00825 (paper: "near 0.0082"), the helical wires after it.
 TEST(PlasticityProgram, SevenWireYieldsInTheCoreFirstAtSigmaYOverE) {
   const ProgramRun run = run_case("cases/verification/seven_wire_yield_onset.yaml", "seven_onset");
   ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
@@ -84,9 +84,11 @@ TEST(PlasticityProgram, SevenWireYieldsInTheCoreFirstAtSigmaYOverE) {
           layer_plastic_strain(wires, static_cast<int>(r.at("step")), static_cast<int>(r.at("increment")), layer) > 0)
         first_yield[layer] = r.at("axial_strain");
   ASSERT_TRUE(first_yield.count(0) && first_yield.count(1));
-  const double yield_strain = 1540.0 / 188000.0;
-  EXPECT_GE(first_yield[0], yield_strain - 1e-9);
-  EXPECT_LE(first_yield[0], yield_strain + 2.1e-5);  // the first increment past sigma_y / E
+  const double yield_strain = std::expm1(1540.0 / 188000.0);
+  // Within one load step of it: the core's fibres also carry the small shear of its torsion, which adds to the
+  // von Mises stress, so the first yielding fibre may come one step before the axial estimate.
+  EXPECT_GE(first_yield[0], yield_strain - 2.1e-5);
+  EXPECT_LE(first_yield[0], yield_strain + 2.1e-5);
   EXPECT_GT(first_yield[1], first_yield[0]);
 }
 

@@ -56,7 +56,7 @@ SectionResponse FibreSection::evaluate(const Vec6& strain, const SectionHistory&
   for (std::size_t i = 0; i < fibres_.size(); ++i) {
     const Eigen::Matrix<double, 3, 6>& B = operators_[i];
     FibrePlasticState next;
-    const FibreResponse f = j2_fibre_return(B * strain, material_, load_state(committed, i), next);
+    const FibreResponse f = fibre_response(B * strain, material_, load_state(committed, i), next);
     store_state(next, trial, i);
     const double area = fibres_[i].area;
     r.resultants += area * B.transpose() * f.stress;
@@ -71,8 +71,8 @@ SectionPointSummary FibreSection::summary(const Vec6& strain, const SectionHisto
     FibrePlasticState next;
     const FibrePlasticState state = load_state(history, i);
     // At a converged state the return from the converged history is the identity on the plastic state.
-    const FibreResponse f = j2_fibre_return(operators_[i] * strain, material_, state, next);
-    const double stress = von_mises(f.stress), plastic = next.equivalent_plastic_strain;
+    const FibreResponse f = fibre_response(operators_[i] * strain, material_, state, next);
+    const double stress = von_mises(f.material_stress), plastic = next.equivalent_plastic_strain;
     s.max_von_mises = std::max(s.max_von_mises, stress);
     s.max_plastic_strain = std::max(s.max_plastic_strain, plastic);
     s.mean_von_mises += stress / fibres_.size();

@@ -1,13 +1,23 @@
 #include "strandfem/beam/j2_beam_plasticity.hpp"
 
 #include <cmath>
-#include <stdexcept>
+#include <limits>
 
 namespace strandfem {
 namespace {
 constexpr int kMaxReturnIterations = 60;
 constexpr double kYieldTolerance = 1e-12;  // relative to the yield stress
 const Vec3 kMisesWeights(1.0, 3.0, 3.0);   // P: sigma_eq^2 = eta^T P eta
+
+// The response at a non-physical Newton iterate (wild first corrections reach shear strains of 2): NaN, so
+// that the residual turns non-finite and the Newton loop rejects the iterate and cuts back. Throwing instead
+// would end the run from inside the threaded assembly.
+FibreResponse rejected_iterate() {
+  FibreResponse r;
+  r.stress = r.material_stress = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+  r.tangent = Mat3::Constant(std::numeric_limits<double>::quiet_NaN());
+  return r;
+}
 }  // namespace
 
 double von_mises(const Vec3& stress) { return std::sqrt(stress.cwiseProduct(stress).dot(kMisesWeights)); }
@@ -43,7 +53,7 @@ FibreResponse j2_fibre_return(const Vec3& strain, const Material& material, cons
     const double slope = -2.0 * weighted_trial2.dot(d.cwiseProduct(a.cwiseProduct(a.cwiseProduct(a))));
     t -= g / slope;
   }
-  if (!converged) throw std::runtime_error("fibre return mapping did not converge");
+  if (!converged) return rejected_iterate();  // trial stays the committed state
   const Vec3 a = (Vec3::Ones() + t * d).cwiseInverse();
   const Vec3 eta = a.cwiseProduct(relative_trial);
   trial.back_stress = committed.back_stress + t * H * eta;
@@ -57,6 +67,31 @@ FibreResponse j2_fibre_return(const Vec3& strain, const Material& material, cons
   const double s = eta.dot(kMisesWeights.cwiseProduct(d.cwiseProduct(a.cwiseProduct(eta))));
   r.tangent = ((1.0 + t * H) * a.cwiseProduct(elastic)).asDiagonal();
   r.tangent += v * w.transpose() / s;
+  return r;
+}
+
+FibreResponse fibre_response(const Vec3& strain, const Material& material, const FibrePlasticState& committed,
+                             FibrePlasticState& trial) {
+  const bool logarithmic =
+      material.plasticity && material.plasticity->stress_measure == StressMeasure::true_stress;
+  if (!logarithmic) {
+    FibreResponse r = j2_fibre_return(strain, material, committed, trial);
+    r.material_stress = r.stress;
+    return r;
+  }
+  const double stretch = 1.0 + strain[0];
+  if (!(stretch > 0)) {
+    trial = committed;  // a fibre squeezed to zero length has no logarithmic strain
+    return rejected_iterate();
+  }
+  const Vec3 log_strain(std::log(stretch), strain[1], strain[2]);
+  FibreResponse r = j2_fibre_return(log_strain, material, committed, trial);
+  r.material_stress = r.stress;
+  // s = S tau with S = diag(1/stretch, 1, 1) = d log_strain / d strain, so ds/deps = S D S + dS/deps tau.
+  const Vec3 scale(1.0 / stretch, 1.0, 1.0);
+  r.stress = scale.cwiseProduct(r.material_stress);
+  r.tangent = scale.asDiagonal() * r.tangent * scale.asDiagonal();
+  r.tangent(0, 0) -= r.material_stress[0] / (stretch * stretch);
   return r;
 }
 

@@ -20,6 +20,7 @@ struct FibreResponse {
   Vec3 stress = Vec3::Zero();
   Mat3 tangent = Mat3::Zero();  // algorithmic (consistent) d stress / d strain
   bool yielding = false;
+  Vec3 material_stress = Vec3::Zero();  // the law's own stress (true stress under StressMeasure::true_stress)
 };
 
 // Von Mises stress of the fibre stress state: sqrt(sigma^2 + 3 tau12^2 + 3 tau13^2).
@@ -30,5 +31,14 @@ double von_mises(const Vec3& stress);
 // associative flow, Prager's hardening scaled so that uniaxially alpha = H eps_p (H: plastic modulus).
 FibreResponse j2_fibre_return(const Vec3& strain, const Material& material, const FibrePlasticState& committed,
                               FibrePlasticState& trial);
+
+// The fibre's response to the beam's fibre strains [eps, gamma12, gamma13], in the stress the section
+// integrates over the reference area (work conjugate to eps). Engineering measure: j2_fibre_return as is.
+// True-stress measure: the J2 law acts on the logarithmic axial strain ln(1 + eps) and returns Kirchhoff
+// stress tau (true stress to within the elastic volume change, since plastic flow is isochoric); the section
+// gets tau / (1 + eps), i.e. true stress times the current area of an incompressible fibre. Shear strains
+// stay small and enter unchanged. Elastic wires (no plasticity) are unaffected.
+FibreResponse fibre_response(const Vec3& strain, const Material& material, const FibrePlasticState& committed,
+                             FibrePlasticState& trial);
 
 }  // namespace strandfem

@@ -5,11 +5,18 @@
 
 namespace strandfem {
 
+// Which stress the law's (sigma_y, Et) describe; see fibre_response() for how each enters the section.
+enum class StressMeasure {
+  true_stress,  // true (Kirchhoff) stress against logarithmic axial strain, as large-strain FE codes take it
+  engineering,  // force over the initial area against engineering axial strain
+};
+
 // Bilinear kinematic hardening: elastic up to the yield stress, then the tangent modulus Et in uniaxial
 // tension; the elastic range keeps its width 2 sigma_y and moves with the back stress (Bauschinger effect).
 struct BilinearHardening {
   double yield_stress = 0;     // MPa
   double tangent_modulus = 0;  // MPa, 0 <= Et < E
+  StressMeasure stress_measure = StressMeasure::true_stress;
   // Plastic (kinematic) modulus H = E Et / (E - Et): the uniaxial back stress is H times the plastic strain.
   double plastic_modulus(double youngs_modulus) const {
     return youngs_modulus * tangent_modulus / (youngs_modulus - tangent_modulus);

@@ -78,12 +78,16 @@ class CaseParser {
       if (const YAML::Node p = entry.second["plasticity"]) {
         const std::string pp = path + ".plasticity";
         if (!p.IsMap()) reader_.fail(p, pp, "expected {yield_stress, tangent_modulus} in MPa");
-        reader_.check_keys(p, pp, {"yield_stress", "tangent_modulus"});
+        reader_.check_keys(p, pp, {"yield_stress", "tangent_modulus", "stress_measure"});
         BilinearHardening law;
         law.yield_stress = reader_.positive(reader_.require(p, pp, "yield_stress"), pp + ".yield_stress", "MPa");
         law.tangent_modulus = reader_.non_negative(reader_.require(p, pp, "tangent_modulus"), pp + ".tangent_modulus", "MPa");
         if (law.tangent_modulus >= m.youngs_modulus)
           reader_.fail(p["tangent_modulus"], pp + ".tangent_modulus", "expected a hardening modulus below E (" + std::to_string(m.youngs_modulus) + " MPa)");
+        if (p["stress_measure"])
+          law.stress_measure = reader_.choice(p["stress_measure"], pp + ".stress_measure", {"true_stress", "engineering"}) == "engineering"
+                                   ? StressMeasure::engineering
+                                   : StressMeasure::true_stress;
         m.plasticity = law;
       }
       materials_[name] = m;
