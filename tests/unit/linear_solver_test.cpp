@@ -1,6 +1,7 @@
 // Requirement: both sparse direct solvers solve unsymmetric systems to round-off, order with METIS for
 // real (read back from the solver, not assumed from the request) and report their statistics.
 #include "strandfem/solver/linear_solver.hpp"
+#include "strandfem/solver/krylov.hpp"
 
 #include <gtest/gtest.h>
 
@@ -95,6 +96,31 @@ TEST(LinearSolverTest, MumpsSolvesUnsymmetricSystemWithMetisOrdering) {
 }
 
 TEST(LinearSolverTest, UmfpackSolvesUnsymmetricSystemWithMetisOrdering) { check_solver("umfpack", "metis"); }
+
+// Single-precision factors solve to single precision only (so they say they need refinement); as the
+// preconditioner of GMRES on the double-precision matrix they give the solution to round-off in a few iterations.
+TEST(LinearSolverTest, SinglePrecisionMumpsPreconditionsGmresToDoublePrecision) {
+  const SparseMatrix a = convection_diffusion_matrix();
+  const std::vector<double> expected = known_solution();
+  auto solver = make_linear_solver("mumps_single");
+  EXPECT_TRUE(solver->needs_refinement());
+  EXPECT_FALSE(make_linear_solver("mumps")->needs_refinement());
+  solver->analyze(a.pattern);
+  solver->factorize(a.values);
+  const std::vector<double> b = multiply(a, expected);
+  std::vector<double> direct = b;
+  solver->solve(direct);
+  double direct_error = 0;
+  for (int k = 0; k < kUnknowns; ++k) direct_error = std::max(direct_error, std::abs(direct[k] - expected[k]));
+  EXPECT_GT(direct_error, 1e-12);  // single precision shows
+  EXPECT_LT(direct_error, 1e-4);
+  std::vector<double> x;
+  const KrylovResult k = gmres(a.pattern, a.values, [&](std::vector<double>& v) { solver->solve(v); }, b, x, 1e-13, 10);
+  EXPECT_TRUE(k.converged);
+  EXPECT_LE(k.iterations, 4);
+  for (int i = 0; i < kUnknowns; ++i) ASSERT_NEAR(x[i], expected[i], 1e-11) << "unknown " << i;
+  EXPECT_EQ(solver->statistics().ordering, "metis (user-supplied via libmetis)");
+}
 
 TEST(LinearSolverTest, NestedDissectionOrderingIsAPermutation) {
   const SparseMatrix a = convection_diffusion_matrix();

@@ -489,7 +489,7 @@ class CaseParser {
     if (node["max_iterations"]) o.max_iterations = reader_.integer(node["max_iterations"], "solver.max_iterations", 1, 1000);
     if (node["max_cutbacks"]) o.max_cutbacks = reader_.integer(node["max_cutbacks"], "solver.max_cutbacks", 0, 30);
     if (node["line_search_cuts"]) o.line_search_cuts = reader_.integer(node["line_search_cuts"], "solver.line_search_cuts", 0, 20);
-    if (node["linear_solver"]) o.linear_solver = reader_.choice(node["linear_solver"], "solver.linear_solver", {"mumps", "umfpack"});
+    if (node["linear_solver"]) o.linear_solver = reader_.choice(node["linear_solver"], "solver.linear_solver", {"mumps", "mumps_single", "umfpack"});
     if (node["threads"]) o.threads = reader_.integer(node["threads"], "solver.threads", 0, kMaxThreadsAsked);
     if (node["krylov_iterations"]) o.krylov_iterations = reader_.integer(node["krylov_iterations"], "solver.krylov_iterations", 0, 200);
     if (node["krylov_tolerance"]) o.krylov_tolerance = reader_.positive(node["krylov_tolerance"], "solver.krylov_tolerance", "-");

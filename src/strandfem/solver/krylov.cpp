@@ -36,10 +36,14 @@ KrylovResult gmres(const SparsePattern& pattern, const std::vector<double>& valu
   Vector cosines(max_iterations), sines(max_iterations), g = Vector::Zero(max_iterations + 1);
   g[0] = beta;
   std::vector<double> work(n), product(n);
+  // Flexible GMRES keeps z_k = M^-1 v_k and builds x from them: a single-precision preconditioner rounds its
+  // input, so it is not exactly linear and M^-1 (V y) would differ from Z y by that rounding.
+  std::vector<Vector> preconditioned;
   int k = 0;
   for (; k < max_iterations; ++k) {
     Eigen::Map<Vector>(work.data(), n) = basis[k];
     precondition(work);
+    preconditioned.push_back(Eigen::Map<const Vector>(work.data(), n));
     multiply(pattern, values, work, product);
     Vector w = Eigen::Map<const Vector>(product.data(), n);
     for (int j = 0; j <= k; ++j) {
@@ -76,12 +80,11 @@ KrylovResult gmres(const SparsePattern& pattern, const std::vector<double>& valu
     basis.push_back(w / next_norm);
   }
   result.iterations = k;
-  // x = M^-1 V y with H y = g (upper triangular after the rotations).
+  // x = Z y with H y = g (upper triangular after the rotations).
   const Vector y = hessenberg.topLeftCorner(k, k).triangularView<Eigen::Upper>().solve(g.head(k));
   Vector combination = Vector::Zero(n);
-  for (int j = 0; j < k; ++j) combination += y[j] * basis[j];
+  for (int j = 0; j < k; ++j) combination += y[j] * preconditioned[j];
   Eigen::Map<Vector>(x.data(), n) = combination;
-  precondition(x);
   result.converged = result.relative_residual <= tolerance && std::isfinite(result.relative_residual);
   return result;
 }

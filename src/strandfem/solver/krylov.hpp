@@ -1,5 +1,6 @@
-// Restarted GMRES, right-preconditioned, on a CSC matrix: solves the current tangent with an older factorization
-// as preconditioner, so that Newton keeps the exact tangent's convergence without refactoring every iteration.
+// Flexible GMRES (right-preconditioned, no restart) on a CSC matrix: solves the current tangent with an older
+// factorization, or single-precision factors, as preconditioner, so that Newton keeps the exact tangent's
+// convergence without refactoring every iteration.
 #pragma once
 #include <functional>
 #include <vector>

@@ -10,6 +10,7 @@ namespace strandfem {
 
 std::unique_ptr<LinearSolver> make_umfpack_solver();
 std::unique_ptr<LinearSolver> make_mumps_solver();
+std::unique_ptr<LinearSolver> make_single_precision_mumps_solver();
 
 int SparsePattern::find(int row, int col) const {
   const auto begin = row_index.begin() + column_start[col], end = row_index.begin() + column_start[col + 1];
@@ -53,8 +54,9 @@ std::vector<int> nested_dissection_ordering(const SparsePattern& pattern) {
 
 std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name) {
   if (name == "mumps") return make_mumps_solver();
+  if (name == "mumps_single") return make_single_precision_mumps_solver();
   if (name == "umfpack") return make_umfpack_solver();
-  throw std::invalid_argument("unknown linear solver '" + name + "' (expected mumps or umfpack)");
+  throw std::invalid_argument("unknown linear solver '" + name + "' (expected mumps, mumps_single or umfpack)");
 }
 
 }  // namespace strandfem

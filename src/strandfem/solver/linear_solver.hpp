@@ -41,6 +41,9 @@ class LinearSolver {
   virtual void solve(std::vector<double>& rhs) = 0;
   virtual std::string name() const = 0;
   virtual const LinearSolverStatistics& statistics() const = 0;
+  // True when the factors are too inexact for a Newton correction (single precision): every solve is then a
+  // GMRES solve of the double-precision tangent that the factors precondition.
+  virtual bool needs_refinement() const { return false; }
 };
 
 // METIS nested-dissection ordering of the symmetrized pattern A + A^T (diagonal ignored): the returned
@@ -48,7 +51,8 @@ class LinearSolver {
 // structurally near-symmetric pattern, so ordering A + A^T is what the multifrontal solvers want.
 std::vector<int> nested_dissection_ordering(const SparsePattern& pattern);
 
-// "mumps" (default) or "umfpack"; throws std::invalid_argument for any other name.
+// "mumps" (default), "mumps_single" (single-precision factors) or "umfpack"; throws std::invalid_argument
+// for any other name.
 std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name);
 
 // Thrown when a factorization fails (singular matrix, out of memory).

@@ -19,8 +19,8 @@ void SolverOptions::validate() const {
   if (!(stabilization >= 0 && stabilization < 1)) throw std::invalid_argument("solver.stabilization must be in [0, 1), got " + std::to_string(stabilization));
   if (max_cutbacks < 0) throw std::invalid_argument("solver.max_cutbacks must be >= 0");
   if (threads < 0) throw std::invalid_argument("solver.threads must be >= 0");
-  if (linear_solver != "mumps" && linear_solver != "umfpack")
-    throw std::invalid_argument("solver.linear_solver must be 'mumps' or 'umfpack', got '" + linear_solver + "'");
+  if (linear_solver != "mumps" && linear_solver != "mumps_single" && linear_solver != "umfpack")
+    throw std::invalid_argument("solver.linear_solver must be 'mumps', 'mumps_single' or 'umfpack', got '" + linear_solver + "'");
 }
 
 void Model::build_elements() {

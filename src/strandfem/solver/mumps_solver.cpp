@@ -1,8 +1,11 @@
-// MUMPS 5.5 sequential unsymmetric multifrontal LU, ordered by METIS through libmetis (the path to distributed runs).
+// MUMPS 5.5 sequential unsymmetric multifrontal LU, ordered by METIS through libmetis (the path to distributed runs),
+// in double precision or in single precision (factors that precondition GMRES on the double-precision tangent).
 #include <dmumps_c.h>
+#include <smumps_c.h>
 
 #include <chrono>
 #include <string>
+#include <type_traits>
 
 #include "strandfem/solver/linear_solver.hpp"
 
@@ -32,14 +35,32 @@ std::string ordering_name(int infog7) {
 // MUMPS stores counts that overflow a 4-byte INFOG entry as negative millions.
 long long unpack_count(int value) { return value < 0 ? -1'000'000LL * value : value; }
 
+struct DoublePrecision {
+  using Struct = DMUMPS_STRUC_C;
+  using Real = double;
+  static void call(Struct* id) { dmumps_c(id); }
+  static constexpr const char* name = "mumps";
+};
+
+struct SinglePrecision {
+  using Struct = SMUMPS_STRUC_C;
+  using Real = float;
+  static void call(Struct* id) { smumps_c(id); }
+  static constexpr const char* name = "mumps_single";
+};
+
+template <class Precision>
 class MumpsSolver final : public LinearSolver {
+  using Real = typename Precision::Real;
+  static constexpr bool kSingle = std::is_same_v<Real, float>;
+
  public:
   MumpsSolver() {
     id_.comm_fortran = kUseCommWorld;
     id_.par = 1;
     id_.sym = 0;  // unsymmetric: friction makes the tangent unsymmetric
     id_.job = -1;
-    dmumps_c(&id_);
+    Precision::call(&id_);
     check("initialization");
     id_.icntl[0] = -1;  // no error messages on stdout: errors are reported through exceptions
     id_.icntl[1] = -1;
@@ -52,7 +73,7 @@ class MumpsSolver final : public LinearSolver {
   }
   ~MumpsSolver() override {
     id_.job = -2;
-    dmumps_c(&id_);
+    Precision::call(&id_);
   }
 
   void analyze(const SparsePattern& pattern) override {
@@ -74,7 +95,7 @@ class MumpsSolver final : public LinearSolver {
     id_.a = values_.data();
     id_.perm_in = pivot_position_.data();
     id_.job = 1;
-    dmumps_c(&id_);
+    Precision::call(&id_);
     check("analysis");
     statistics_.ordering = ordering_name(id_.infog[6]);
     ++statistics_.analyses;
@@ -83,10 +104,10 @@ class MumpsSolver final : public LinearSolver {
 
   void factorize(const std::vector<double>& values) override {
     const auto start = Clock::now();
-    values_ = values;
+    values_.assign(values.begin(), values.end());
     id_.a = values_.data();
     id_.job = 2;
-    dmumps_c(&id_);
+    Precision::call(&id_);
     check("factorization (singular or unstable tangent)");
     statistics_.factor_entries = unpack_count(id_.infog[28]);  // INFOG(29): entries in the factors
     statistics_.factorization_flops = id_.rinfog[2];             // RINFOG(3): flops of the elimination
@@ -96,17 +117,24 @@ class MumpsSolver final : public LinearSolver {
 
   void solve(std::vector<double>& rhs) override {
     const auto start = Clock::now();
-    id_.rhs = rhs.data();
+    if constexpr (kSingle) {
+      rhs_.assign(rhs.begin(), rhs.end());
+      id_.rhs = rhs_.data();
+    } else {
+      id_.rhs = rhs.data();
+    }
     id_.nrhs = 1;
     id_.lrhs = id_.n;
     id_.job = 3;
-    dmumps_c(&id_);
+    Precision::call(&id_);
     check("solve");
+    if constexpr (kSingle) rhs.assign(rhs_.begin(), rhs_.end());
     ++statistics_.solves;
     statistics_.solve_seconds += seconds_since(start);
   }
 
-  std::string name() const override { return "mumps"; }
+  std::string name() const override { return Precision::name; }
+  bool needs_refinement() const override { return kSingle; }
   const LinearSolverStatistics& statistics() const override { return statistics_; }
 
  private:
@@ -115,15 +143,18 @@ class MumpsSolver final : public LinearSolver {
       throw LinearSolverError(std::string("MUMPS ") + phase + " failed, INFOG(1) = " + std::to_string(id_.infog[0]) +
                               ", INFOG(2) = " + std::to_string(id_.infog[1]));
   }
-  DMUMPS_STRUC_C id_{};
+  typename Precision::Struct id_{};
   std::vector<int> rows_, cols_;
   std::vector<int> pivot_position_;  // PERM_IN: 1-based position of each variable in the pivot order
-  std::vector<double> values_;
+  std::vector<Real> values_, rhs_;
   LinearSolverStatistics statistics_;
 };
 
 }  // namespace
 
-std::unique_ptr<LinearSolver> make_mumps_solver() { return std::make_unique<MumpsSolver>(); }
+std::unique_ptr<LinearSolver> make_mumps_solver() { return std::make_unique<MumpsSolver<DoublePrecision>>(); }
+std::unique_ptr<LinearSolver> make_single_precision_mumps_solver() {
+  return std::make_unique<MumpsSolver<SinglePrecision>>();
+}
 
 }  // namespace strandfem

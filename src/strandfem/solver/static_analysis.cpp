@@ -12,6 +12,7 @@ namespace strandfem {
 
 namespace {
 constexpr int kMaxContactRounds = 40;  // contact set changes per increment before a cut-back
+constexpr int kRefinementIterations = 30;  // GMRES iterations allowed on fresh single-precision factors
 constexpr int kEasyIncrementsBeforeRegrowth = 3;
 constexpr double kPredictorAcceptance = 1e-3;  // of the tolerance, for a predictor taken without correction
 // After this many corrections an iterate within kForceOnlyMargin of the force tolerance is accepted on the force
@@ -87,7 +88,22 @@ bool StaticAnalysis::solve_linear(std::vector<double>& rhs) {
     }
     solver_->factorize(values_);
     factorization_usable_ = true;
-    solver_->solve(rhs);
+    if (!solver_->needs_refinement()) {
+      solver_->solve(rhs);
+      return true;
+    }
+    // Single-precision factors: GMRES on the tangent brings the correction to the double-precision tolerance.
+    std::vector<double> x;
+    const int limit = std::max(opt.krylov_iterations, kRefinementIterations);
+    const KrylovResult k = gmres(assembler_->pattern(), values_, [this](std::vector<double>& v) { solver_->solve(v); },
+                                 rhs, x, opt.krylov_tolerance, limit);
+    statistics_.krylov_iterations += k.iterations;
+    ++statistics_.krylov_solves;
+    if (!k.converged) {
+      factorization_usable_ = false;
+      return false;
+    }
+    rhs = x;
   } catch (const LinearSolverError&) {
     factorization_usable_ = false;
     return false;
