@@ -64,7 +64,7 @@ def run(program, case, threads, folder):
     summary = os.path.join(out, "summary.json")
     if os.path.exists(summary):
         s = json.load(open(summary)).get("solver_statistics", {})
-        row.update({k: s.get(k) for k in ("newton_iterations", "factorizations", "krylov_solves", "krylov_iterations", "pattern_rebuilds", "rejected_extrapolations", "plain_retries", "force_only_acceptances",
+        row.update({k: s.get(k) for k in ("newton_iterations", "factorizations", "krylov_solves", "krylov_iterations", "pattern_rebuilds", "rejected_extrapolations", "plain_retries", "double_precision_fallbacks", "force_only_acceptances",
                                           "assembly_seconds", "linear_seconds", "factorization_seconds", "ordering",
                                           "factor_entries", "factorization_flops")})
         for k in ("assembly_seconds", "linear_seconds", "factorization_seconds"):

@@ -480,7 +480,7 @@ class CaseParser {
   void parse_solver(const YAML::Node& node) {
     reader_.check_keys(node, "solver", {"force_tolerance", "moment_tolerance", "displacement_tolerance", "max_iterations",
                                         "max_cutbacks", "line_search_cuts", "linear_solver", "threads",
-                                        "krylov_iterations", "krylov_tolerance", "extrapolate", "stabilization",
+                                        "krylov_iterations", "refinement_iterations", "krylov_tolerance", "extrapolate", "stabilization",
                                         "stabilization_ramp_off"});
     SolverOptions& o = out_.model.options;
     if (node["force_tolerance"]) o.force_tolerance = reader_.positive(node["force_tolerance"], "solver.force_tolerance", "-");
@@ -492,6 +492,8 @@ class CaseParser {
     if (node["linear_solver"]) o.linear_solver = reader_.choice(node["linear_solver"], "solver.linear_solver", {"mumps", "mumps_single", "umfpack"});
     if (node["threads"]) o.threads = reader_.integer(node["threads"], "solver.threads", 0, kMaxThreadsAsked);
     if (node["krylov_iterations"]) o.krylov_iterations = reader_.integer(node["krylov_iterations"], "solver.krylov_iterations", 0, 200);
+    if (node["refinement_iterations"])
+      o.refinement_iterations = reader_.integer(node["refinement_iterations"], "solver.refinement_iterations", 1, 200);
     if (node["krylov_tolerance"]) o.krylov_tolerance = reader_.positive(node["krylov_tolerance"], "solver.krylov_tolerance", "-");
     if (node["extrapolate"]) o.extrapolate = reader_.boolean(node["extrapolate"], "solver.extrapolate");
     if (node["stabilization"]) {
@@ -584,6 +586,7 @@ CaseDefinition load_case(const std::string& path) {
                           {"line_search_cuts", c.model.options.line_search_cuts},
                           {"linear_solver", c.model.options.linear_solver},
                           {"krylov_iterations", c.model.options.krylov_iterations},
+                          {"refinement_iterations", c.model.options.refinement_iterations},
                           {"krylov_tolerance", c.model.options.krylov_tolerance},
                           {"extrapolate", c.model.options.extrapolate},
                           {"stabilization", c.model.options.stabilization},

@@ -305,6 +305,7 @@ void ResultWriter::finish(const StaticAnalysis& analysis, const AnalysisStatus& 
                                   {"pattern_rebuilds", a.pattern_rebuilds},
                                   {"rejected_extrapolations", a.rejected_extrapolations},
                                   {"plain_retries", a.plain_retries},
+                                  {"double_precision_fallbacks", a.double_precision_fallbacks},
                                   {"force_only_acceptances", a.force_only_acceptances},
                                   {"assembly_seconds", a.assembly_seconds},
                                   {"linear_seconds", a.linear_seconds},

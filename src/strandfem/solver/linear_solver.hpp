@@ -51,7 +51,7 @@ class LinearSolver {
 // structurally near-symmetric pattern, so ordering A + A^T is what the multifrontal solvers want.
 std::vector<int> nested_dissection_ordering(const SparsePattern& pattern);
 
-// "mumps" (default), "mumps_single" (single-precision factors) or "umfpack"; throws std::invalid_argument
+// "mumps_single" (single-precision factors; the case default), "mumps" or "umfpack"; throws std::invalid_argument
 // for any other name.
 std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name);
 

@@ -15,6 +15,8 @@ void SolverOptions::validate() const {
   if (max_iterations < 1) throw std::invalid_argument("solver.max_iterations must be >= 1");
   if (line_search_cuts < 0 || line_search_cuts > 20) throw std::invalid_argument("solver.line_search_cuts must be in 0..20");
   if (krylov_iterations < 0 || krylov_iterations > 200) throw std::invalid_argument("solver.krylov_iterations must be in 0..200");
+  if (refinement_iterations < 1 || refinement_iterations > 200)
+    throw std::invalid_argument("solver.refinement_iterations must be in 1..200");
   if (!(krylov_tolerance > 0 && krylov_tolerance < 1)) throw std::invalid_argument("solver.krylov_tolerance must be in (0, 1)");
   if (!(stabilization >= 0 && stabilization < 1)) throw std::invalid_argument("solver.stabilization must be in [0, 1), got " + std::to_string(stabilization));
   if (max_cutbacks < 0) throw std::invalid_argument("solver.max_cutbacks must be >= 0");

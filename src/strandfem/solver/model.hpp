@@ -22,6 +22,9 @@ struct SolverOptions {
   // Krylov reuse: GMRES on the current tangent, preconditioned by the last factorization, up to this many
   // iterations before refactoring (0: factor every Newton iteration); Newton keeps the exact tangent.
   int krylov_iterations = 12;
+  // GMRES iterations that refine a solve with fresh single-precision factors (mumps_single) to krylov_tolerance;
+  // when they do not suffice, the tangent is factored in double precision instead.
+  int refinement_iterations = 30;
   double krylov_tolerance = 1e-8;         // relative residual of the linear solve
   // Predictor: start each increment of a step (after its first) from the converged state plus the last
   // increment's motion of the free DOFs, scaled to the new size, instead of moving the driven DOFs alone.
@@ -30,7 +33,7 @@ struct SolverOptions {
   // constant over each step or ramped off linearly to zero at the step's end.
   double stabilization = 0;
   bool stabilization_ramp_off = true;
-  std::string linear_solver = "mumps";    // mumps | umfpack
+  std::string linear_solver = "mumps_single";  // mumps_single (single-precision factors refined by GMRES) | mumps | umfpack
   int threads = 0;                        // OpenMP threads for element evaluation; 0 = OpenMP default
   void validate() const;                  // throws std::invalid_argument naming the bad option
 };

@@ -12,7 +12,6 @@ namespace strandfem {
 
 namespace {
 constexpr int kMaxContactRounds = 40;  // contact set changes per increment before a cut-back
-constexpr int kRefinementIterations = 30;  // GMRES iterations allowed on fresh single-precision factors
 constexpr int kEasyIncrementsBeforeRegrowth = 3;
 constexpr double kPredictorAcceptance = 1e-3;  // of the tolerance, for a predictor taken without correction
 // After this many corrections an iterate within kForceOnlyMargin of the force tolerance is accepted on the force
@@ -67,6 +66,7 @@ void StaticAnalysis::analyze() {
   if (dofs_.equation_count == 0) return;  // all DOFs driven: nothing to factor
   solver_->analyze(assembler_->pattern());
   factorization_usable_ = false;
+  fallback_analyzed_ = false;
 }
 
 bool StaticAnalysis::solve_linear(std::vector<double>& rhs) {
@@ -94,16 +94,22 @@ bool StaticAnalysis::solve_linear(std::vector<double>& rhs) {
     }
     // Single-precision factors: GMRES on the tangent brings the correction to the double-precision tolerance.
     std::vector<double> x;
-    const int limit = std::max(opt.krylov_iterations, kRefinementIterations);
     const KrylovResult k = gmres(assembler_->pattern(), values_, [this](std::vector<double>& v) { solver_->solve(v); },
-                                 rhs, x, opt.krylov_tolerance, limit);
+                                 rhs, x, opt.krylov_tolerance, opt.refinement_iterations);
     statistics_.krylov_iterations += k.iterations;
     ++statistics_.krylov_solves;
-    if (!k.converged) {
-      factorization_usable_ = false;
-      return false;
+    if (k.converged) {
+      rhs = x;
+      return true;
     }
-    rhs = x;
+    // Too ill-conditioned for single precision: this tangent is factored and solved in double.
+    factorization_usable_ = false;
+    if (!fallback_solver_) fallback_solver_ = make_linear_solver("mumps");
+    if (!fallback_analyzed_) fallback_solver_->analyze(assembler_->pattern());
+    fallback_analyzed_ = true;
+    fallback_solver_->factorize(values_);
+    fallback_solver_->solve(rhs);
+    ++statistics_.double_precision_fallbacks;
   } catch (const LinearSolverError&) {
     factorization_usable_ = false;
     return false;

@@ -38,6 +38,7 @@ struct AnalysisStatistics {
   int rejected_extrapolations = 0;  // extrapolated predictors worse than the plain one (not used)
   int force_only_acceptances = 0;  // increments accepted on the force test alone (see IncrementReport::force_only)
   int plain_retries = 0;       // failed extrapolated increments repeated at the same size without extrapolation
+  int double_precision_fallbacks = 0;  // single-precision factors that GMRES could not refine: solved in double
   double assembly_seconds = 0; // tangent assembly (elements and interactions) for Newton corrections
   double linear_seconds = 0;   // factorizations, solves and GMRES
 };
@@ -118,6 +119,9 @@ class StaticAnalysis {
   DofMap dofs_;
   std::unique_ptr<Assembler> assembler_;
   std::unique_ptr<LinearSolver> solver_;
+  // Double-precision MUMPS for the solves that single-precision factors cannot precondition (made on first use).
+  std::unique_ptr<LinearSolver> fallback_solver_;
+  bool fallback_analyzed_ = false;  // for the current pattern
   std::vector<NodeState> state_, committed_state_;
   std::vector<NodeState> previous_committed_state_;  // the converged state before committed_state_
   std::map<ActionKey, double> applied_motion_, committed_motion_;
