@@ -309,6 +309,7 @@ void ResultWriter::finish(const StaticAnalysis& analysis, const AnalysisStatus& 
                                   {"force_only_acceptances", a.force_only_acceptances},
                                   {"assembly_seconds", a.assembly_seconds},
                                   {"linear_seconds", a.linear_seconds},
+                                  {"pattern_seconds", a.pattern_seconds},
                                   {"factorization_seconds", l.factorization_seconds},
                                   {"solve_seconds", l.solve_seconds},
                                   {"analyses", l.analyses},

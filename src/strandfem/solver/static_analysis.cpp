@@ -123,6 +123,7 @@ void StaticAnalysis::build_pattern() {
 }
 
 void StaticAnalysis::rebuild_pattern() {
+  const Timer timer(statistics_.pattern_seconds);
   build_pattern();
   ++statistics_.pattern_rebuilds;
 }

@@ -41,6 +41,7 @@ struct AnalysisStatistics {
   int double_precision_fallbacks = 0;  // single-precision factors that GMRES could not refine: solved in double
   double assembly_seconds = 0; // tangent assembly (elements and interactions) for Newton corrections
   double linear_seconds = 0;   // factorizations, solves and GMRES
+  double pattern_seconds = 0;  // pattern rebuilds: the assembler's pattern, METIS ordering and symbolic analysis
 };
 
 // Work done on the strand and energy taken by the viscous stabilization, summed over converged increments.
