@@ -27,13 +27,14 @@ int main(int argc, char** argv) {
     current[i].rotation = (quaternion_from_rotation_vector(Vec3(0.01, 0.02 * i, -0.03)) * reference[i].rotation).normalized();
   }
   BeamElement element({0, 1, 2}, &section, reference);
+  BeamElementState state = element.initial_state();
   BeamElement::Output out;
   using clock = std::chrono::steady_clock;
   double checksum = 0;
   for (bool with_tangent : {false, true}) {
     const auto start = clock::now();
     for (int k = 0; k < evaluations; ++k) {
-      element.evaluate(current, with_tangent, out);
+      element.evaluate(current, state, with_tangent, out);
       checksum += out.residual[k % 18] + out.tangent(k % 18, (k / 18) % 18);
     }
     const double seconds = std::chrono::duration<double>(clock::now() - start).count();

@@ -21,8 +21,8 @@ Eigen::MatrixXd dense(const SparsePattern& p, const std::vector<double>& values)
 }
 
 // Residual on free DOFs after perturbing free DOF `eq` by h (spin for rotations), slaves following.
-Eigen::VectorXd free_residual(Model& model, const DofMap& dofs, Assembler& assembler, std::vector<NodeState> state,
-                              int eq, double h) {
+Eigen::VectorXd free_residual(const Model& model, ModelState& model_state, const DofMap& dofs, Assembler& assembler,
+                              std::vector<NodeState> state, int eq, double h) {
   for (std::size_t n = 0; n < state.size(); ++n)
     for (int c = 0; c < 6; ++c)
       if (dofs.equation[n][c] == eq) {
@@ -31,7 +31,7 @@ Eigen::VectorXd free_residual(Model& model, const DofMap& dofs, Assembler& assem
       }
   for (const RigidTie& t : model.ties) state[t.slave] = tied_state(t, state[t.master]);
   std::vector<double> forces;
-  assembler.assemble(model, state, forces, nullptr);
+  assembler.assemble(model, model_state, state, forces, nullptr);
   Eigen::VectorXd r(dofs.equation_count);
   for (std::size_t n = 0; n < state.size(); ++n)
     for (int c = 0; c < 6; ++c)
@@ -61,9 +61,9 @@ solver: {force_tolerance: 1.0e-8, moment_tolerance: 1.0e-8}
   StaticAnalysis analysis(c.model);
   ASSERT_TRUE(analysis.run({}).converged);
   double plastic_strain = 0;
-  for (const BeamElement& e : c.model.elements)
-    for (const BeamIntegrationPoint& p : e.points())
-      plastic_strain = std::max(plastic_strain, e.section().summary(p.strain, p.committed).max_plastic_strain);
+  for (std::size_t k = 0; k < c.model.elements.size(); ++k)
+    for (const SectionPointState& p : analysis.model_state().elements[k].points)
+      plastic_strain = std::max(plastic_strain, c.model.elements[k].section().summary(p.strain, p.committed).max_plastic_strain);
   if (material.find("plasticity") != std::string::npos) EXPECT_GT(plastic_strain, 1e-3) << "the check must run past yield";
   // Disturb the converged state so the check runs away from equilibrium, where asymmetric terms show.
   std::vector<NodeState> state = analysis.state();
@@ -73,21 +73,24 @@ solver: {force_tolerance: 1.0e-8, moment_tolerance: 1.0e-8}
   }
   for (const RigidTie& t : c.model.ties) state[t.slave] = tied_state(t, state[t.master]);
   const DofMap& dofs = analysis.dofs();
-  Assembler assembler(c.model, dofs);
+  // A copy of the converged model state: the finite differences write trial histories into it.
+  ModelState model_state = analysis.model_state();
+  Assembler assembler(c.model, model_state, dofs);
   std::vector<double> forces, values;
-  assembler.assemble(c.model, state, forces, &values);
+  assembler.assemble(c.model, model_state, state, forces, &values);
   const Eigen::MatrixXd K = dense(assembler.pattern(), values);
   Eigen::MatrixXd fd(dofs.equation_count, dofs.equation_count);
   const double h = 1e-6;
   for (int eq = 0; eq < dofs.equation_count; ++eq)
-    fd.col(eq) = (free_residual(c.model, dofs, assembler, state, eq, h) - free_residual(c.model, dofs, assembler, state, eq, -h)) / (2 * h);
+    fd.col(eq) = (free_residual(c.model, model_state, dofs, assembler, state, eq, h) -
+                  free_residual(c.model, model_state, dofs, assembler, state, eq, -h)) / (2 * h);
   EXPECT_LT((fd - K).norm() / K.norm(), 1e-6);
   if (c.model.contact_settings.enabled) {
     int closed = 0, frictional = 0;
-    for (std::size_t i = 0; i < c.model.contacts.points().size(); ++i) {
-      const bool is_closed = c.model.contacts.responses()[i].status != ContactStatus::kOpen;
+    for (std::size_t i = 0; i < model_state.contacts.points().size(); ++i) {
+      const bool is_closed = model_state.contacts.responses()[i].status != ContactStatus::kOpen;
       closed += is_closed;
-      frictional += is_closed && c.model.contacts.points()[i].history.closed && c.model.contacts.points()[i].mu1 > 0;
+      frictional += is_closed && model_state.contacts.points()[i].history.closed && model_state.contacts.points()[i].mu1 > 0;
     }
     EXPECT_GT(closed, 0) << "the check must run with closed contacts";
     if (c.model.contact_settings.friction > 0) EXPECT_GT(frictional, 0) << "and with surface friction (stick anchors set)";

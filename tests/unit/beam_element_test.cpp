@@ -14,15 +14,17 @@ class BeamElementTest : public ::testing::Test {
   BeamElementTest()
       : section_(SectionGeometry::circle(3.0, 0.3), Material{200000, 0.3, 7.85e-9}),
         reference_(testing::helical_reference()),
-        element_({0, 1, 2}, &section_, reference_) {}
+        element_({0, 1, 2}, &section_, reference_),
+        state_(element_.initial_state()) {}
   ElasticSection section_;
   std::array<NodeState, 3> reference_;
   BeamElement element_;
+  BeamElementState state_;
 };
 
 TEST_F(BeamElementTest, ReferenceConfigurationIsStressFree) {
   BeamElement::Output out;
-  element_.evaluate(reference_, true, out);
+  element_.evaluate(reference_, state_, true, out);
   EXPECT_LT(out.residual.norm(), 1e-8);
   EXPECT_NEAR(out.energy, 0.0, 1e-12);
 }
@@ -30,14 +32,14 @@ TEST_F(BeamElementTest, ReferenceConfigurationIsStressFree) {
 TEST_F(BeamElementTest, ResidualIsFiniteDifferenceOfEnergy) {
   const auto state = testing::deformed_state(reference_);
   BeamElement::Output out;
-  element_.evaluate(state, false, out);
+  element_.evaluate(state, state_, false, out);
   const double h = 1e-6;
   for (int k = 0; k < 18; ++k) {
     Eigen::Matrix<double, 18, 1> d = Eigen::Matrix<double, 18, 1>::Zero();
     d[k] = h;
     BeamElement::Output plus, minus;
-    element_.evaluate(testing::perturbed(state, d), false, plus);
-    element_.evaluate(testing::perturbed(state, -d), false, minus);
+    element_.evaluate(testing::perturbed(state, d), state_, false, plus);
+    element_.evaluate(testing::perturbed(state, -d), state_, false, minus);
     const double fd = (plus.energy - minus.energy) / (2 * h);
     EXPECT_NEAR(out.residual[k], fd, 1e-6 * out.residual.norm()) << "component " << k;
   }
@@ -46,21 +48,21 @@ TEST_F(BeamElementTest, ResidualIsFiniteDifferenceOfEnergy) {
 TEST_F(BeamElementTest, TangentIsFiniteDifferenceOfResidual) {
   const auto state = testing::deformed_state(reference_);
   BeamElement::Output out;
-  element_.evaluate(state, true, out);
+  element_.evaluate(state, state_, true, out);
   ElementMatrix fd;
   const double h = 1e-7;
   for (int k = 0; k < 18; ++k) {
     Eigen::Matrix<double, 18, 1> d = Eigen::Matrix<double, 18, 1>::Zero();
     d[k] = h;
     BeamElement::Output plus, minus;
-    element_.evaluate(testing::perturbed(state, d), false, plus);
-    element_.evaluate(testing::perturbed(state, -d), false, minus);
+    element_.evaluate(testing::perturbed(state, d), state_, false, plus);
+    element_.evaluate(testing::perturbed(state, -d), state_, false, minus);
     fd.col(k) = (plus.residual - minus.residual) / (2 * h);
   }
   EXPECT_LT((fd - out.tangent).norm() / out.tangent.norm(), 1e-6);
   // The residual from the second-derivative pass equals the first-derivative one.
   BeamElement::Output first;
-  element_.evaluate(state, false, first);
+  element_.evaluate(state, state_, false, first);
   EXPECT_LT((first.residual - out.residual).norm(), 1e-10 * out.residual.norm());
 }
 
@@ -74,8 +76,8 @@ TEST_F(BeamElementTest, RigidMotionOfCurvedElementGivesZeroStrain) {
     n.rotation = rigid * n.rotation;
   }
   BeamElement::Output out;
-  element_.evaluate(moved, true, out);
-  for (const auto& p : element_.points()) EXPECT_LT(p.strain.norm(), 1e-12);
+  element_.evaluate(moved, state_, true, out);
+  for (const auto& p : state_.points) EXPECT_LT(p.strain.norm(), 1e-12);
   EXPECT_LT(out.residual.norm(), 1e-7);
   // The same deformation seen after a rigid motion gives the same energy (objectivity).
   const auto state = testing::deformed_state(reference_);
@@ -85,8 +87,8 @@ TEST_F(BeamElementTest, RigidMotionOfCurvedElementGivesZeroStrain) {
     n.rotation = rigid * n.rotation;
   }
   BeamElement::Output a, b;
-  element_.evaluate(state, false, a);
-  element_.evaluate(moved_state, false, b);
+  element_.evaluate(state, state_, false, a);
+  element_.evaluate(moved_state, state_, false, b);
   EXPECT_NEAR(a.energy, b.energy, 1e-10 * a.energy);
 }
 
@@ -103,8 +105,9 @@ TEST_F(BeamElementTest, ConstantCurvatureIsRepresentedExactly) {
     arc[i].rotation = Quaternion(Eigen::AngleAxisd(phi, Vec3::UnitZ()));
   }
   BeamElement::Output out;
-  element.evaluate(arc, false, out);
-  for (const auto& p : element.points()) {
+  BeamElementState arc_state = element.initial_state();
+  element.evaluate(arc, arc_state, false, out);
+  for (const auto& p : arc_state.points) {
     EXPECT_NEAR(p.strain[5], 1.0 / R, 1e-12);
     EXPECT_NEAR(p.strain[3], 0.0, 1e-12);
     EXPECT_NEAR(p.strain[4], 0.0, 1e-12);

@@ -247,29 +247,30 @@ TEST(FibreSection, PlasticStateIsCommittedOrRevertedWithTheIncrement) {
   const FibreSection section(SectionGeometry::circle(3.0, m.poisson_ratio), m);
   const auto reference = testing::helical_reference();
   BeamElement element({0, 1, 2}, &section, reference);
+  BeamElementState element_state = element.initial_state();
   // Stretch the element 2 % along its chord: past yield.
   auto stretched = reference;
   for (auto& n : stretched) n.position *= 1.02;
   BeamElement::Output out;
-  element.evaluate(stretched, true, out);
+  element.evaluate(stretched, element_state, true, out);
   const auto plastic = [&](const SectionHistory& h) { return std::abs(h.back()) > 0; };  // equivalent plastic strain
-  EXPECT_TRUE(plastic(element.points()[0].trial));
-  element.revert();
-  EXPECT_FALSE(plastic(element.points()[0].trial));
-  element.evaluate(stretched, true, out);
-  element.commit();
-  EXPECT_TRUE(plastic(element.points()[0].committed));
+  EXPECT_TRUE(plastic(element_state.points[0].trial));
+  element_state.revert();
+  EXPECT_FALSE(plastic(element_state.points[0].trial));
+  element.evaluate(stretched, element_state, true, out);
+  element_state.commit();
+  EXPECT_TRUE(plastic(element_state.points[0].committed));
   // The tangent of the element with yielding fibres is the finite difference of its residual.
   auto state = stretched;
   for (auto& n : state) n.position *= 1.001;
-  element.evaluate(state, true, out);
+  element.evaluate(state, element_state, true, out);
   ElementMatrix fd;
   for (int k = 0; k < 18; ++k) {
     Eigen::Matrix<double, 18, 1> d = Eigen::Matrix<double, 18, 1>::Zero();
     d[k] = 1e-7;
     BeamElement::Output plus, minus;
-    element.evaluate(testing::perturbed(state, d), false, plus);
-    element.evaluate(testing::perturbed(state, -d), false, minus);
+    element.evaluate(testing::perturbed(state, d), element_state, false, plus);
+    element.evaluate(testing::perturbed(state, -d), element_state, false, minus);
     fd.col(k) = (plus.residual - minus.residual) / 2e-7;
   }
   EXPECT_LT((fd - out.tangent).norm() / out.tangent.norm(), 1e-6);

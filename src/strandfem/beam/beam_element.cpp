@@ -98,7 +98,6 @@ BeamElement::BeamElement(const std::array<int, 3>& nodes, const Section* section
     if (!(jacobian > 1e-12)) throw std::invalid_argument("beam element with zero length");
     for (int i = 0; i < 3; ++i) p.shape_derivative[i] = dN_dxi[i] / jacobian;
     p.weight_length = jacobian;  // Gauss weight 1
-    p.committed = p.trial = section->initial_history();
   }
   const auto kinematics = point_kinematics(q, points_);
   for (int g = 0; g < 2; ++g) {
@@ -107,7 +106,14 @@ BeamElement::BeamElement(const std::array<int, 3>& nodes, const Section* section
   }
 }
 
-void BeamElement::evaluate(const std::array<NodeState, 3>& current, bool with_tangent, Output& out) {
+BeamElementState BeamElement::initial_state() const {
+  BeamElementState state;
+  for (SectionPointState& p : state.points) p.committed = p.trial = section_->initial_history();
+  return state;
+}
+
+void BeamElement::evaluate(const std::array<NodeState, 3>& current, BeamElementState& state, bool with_tangent,
+                           Output& out) const {
   out.residual.setZero();
   out.tangent.setZero();
   out.energy = 0;
@@ -121,14 +127,15 @@ void BeamElement::evaluate(const std::array<NodeState, 3>& current, bool with_ta
     }
     const auto kinematics = point_kinematics(q, points_);
     for (int g = 0; g < 2; ++g) {
-      auto& p = points_[g];
+      const BeamIntegrationPoint& p = points_[g];
+      SectionPointState& ps = state.points[g];
       const auto strain = generalized_strains(kinematics[g], centreline_tangent(current, p));
       const auto B = strain_operator(kinematics[g], strain, p, [](const D1& e, int k) { return e.grad[k]; });
-      for (int c = 0; c < 6; ++c) p.strain[c] = strain[c].value - p.reference_strain[c];
-      const SectionResponse s = section_->evaluate(p.strain, p.committed, p.trial);
-      p.resultants = s.resultants;
+      for (int c = 0; c < 6; ++c) ps.strain[c] = strain[c].value - p.reference_strain[c];
+      const SectionResponse s = section_->evaluate(ps.strain, ps.committed, ps.trial);
+      ps.resultants = s.resultants;
       out.residual += p.weight_length * B.transpose() * s.resultants;
-      out.energy += 0.5 * p.weight_length * p.strain.dot(s.resultants);
+      out.energy += 0.5 * p.weight_length * ps.strain.dot(s.resultants);
     }
     return;
   }
@@ -147,15 +154,16 @@ void BeamElement::evaluate(const std::array<NodeState, 3>& current, bool with_ta
   }
   const auto kinematics = point_kinematics(q, points_);
   for (int g = 0; g < 2; ++g) {
-    auto& p = points_[g];
+    const BeamIntegrationPoint& p = points_[g];
+    SectionPointState& ps = state.points[g];
     const PointKinematics<D2>& k = kinematics[g];
     const auto strain = generalized_strains(k, centreline_tangent(current, p));
     const auto B = strain_operator(k, strain, p, [](const D2& e, int j) { return e.value.grad[j]; });
-    for (int c = 0; c < 6; ++c) p.strain[c] = strain[c].value.value - p.reference_strain[c];
-    const SectionResponse s = section_->evaluate(p.strain, p.committed, p.trial);
-    p.resultants = s.resultants;
+    for (int c = 0; c < 6; ++c) ps.strain[c] = strain[c].value.value - p.reference_strain[c];
+    const SectionResponse s = section_->evaluate(ps.strain, ps.committed, ps.trial);
+    ps.resultants = s.resultants;
     out.residual += p.weight_length * B.transpose() * s.resultants;
-    out.energy += 0.5 * p.weight_length * p.strain.dot(s.resultants);
+    out.energy += 0.5 * p.weight_length * ps.strain.dot(s.resultants);
     out.tangent += p.weight_length * B.transpose() * s.tangent * B;
     // Geometric part: stresses times the second derivatives of the strains. The strains' spin-spin
     // derivatives are the nested dual parts; position-spin ones come from R s_Gamma, as Gamma = R^T x'.
@@ -180,18 +188,18 @@ void BeamElement::evaluate(const std::array<NodeState, 3>& current, bool with_ta
   }
 }
 
-void BeamElement::commit() {
-  for (auto& p : points_) p.committed = p.trial;
+void BeamElementState::commit() {
+  for (auto& p : points) p.committed = p.trial;
 }
-void BeamElement::revert() {
-  for (auto& p : points_) p.trial = p.committed;
+void BeamElementState::revert() {
+  for (auto& p : points) p.trial = p.committed;
 }
 
-void BeamElement::save_history(ArchiveWriter& out) const {
-  for (const auto& p : points_) out.vector(p.committed);
+void BeamElementState::save_history(ArchiveWriter& out) const {
+  for (const auto& p : points) out.vector(p.committed);
 }
-void BeamElement::restore_history(ArchiveReader& in) {
-  for (auto& p : points_) {
+void BeamElementState::restore_history(ArchiveReader& in) {
+  for (auto& p : points) {
     SectionHistory h = in.vector<double>();
     if (h.size() != p.committed.size()) throw ArchiveError("checkpoint does not match this model: section history size differs");
     p.committed = p.trial = std::move(h);

@@ -38,7 +38,7 @@ void ContactWriter::on_increment(const StaticAnalysis& analysis, const Increment
   const bool step_end = report.step_fraction >= 1.0 - 1e-12;
   if (increment_count % case_.output.contacts_every != 0 && !step_end) return;
   const Model& model = analysis.model();
-  const ContactSet& contacts = model.contacts;
+  const ContactSet& contacts = analysis.model_state().contacts;
   for (std::size_t i = 0; i < contacts.points().size(); ++i) {
     const ContactPoint& p = contacts.points()[i];
     const ContactResponse& r = contacts.responses()[i];
@@ -56,7 +56,7 @@ void ContactWriter::on_increment(const StaticAnalysis& analysis, const Increment
 
 void ContactWriter::write_vtu(const StaticAnalysis& analysis, const std::string& name, double time) {
   if (!active(case_)) return;
-  const ContactSet& contacts = analysis.model().contacts;
+  const ContactSet& contacts = analysis.model_state().contacts;
   std::vector<int> closed;
   for (std::size_t i = 0; i < contacts.points().size(); ++i)
     if (contacts.responses()[i].status != ContactStatus::kOpen) closed.push_back(static_cast<int>(i));
@@ -101,7 +101,7 @@ void ContactWriter::write_vtu(const StaticAnalysis& analysis, const std::string&
 }
 
 nlohmann::json ContactWriter::summary(const StaticAnalysis& analysis) {
-  const ContactSet& contacts = analysis.model().contacts;
+  const ContactSet& contacts = analysis.model_state().contacts;
   nlohmann::json j;
   j["enabled"] = contacts.enabled();
   if (!contacts.enabled()) return j;

@@ -34,12 +34,12 @@ void ProfileWriter::on_increment(const StaticAnalysis& analysis, const Increment
   const Model& model = analysis.model();
   const bool ramp_end = report.step_fraction >= 1.0 - 1e-12;
   const bool loading = report.origin.cycle > 0 && !report.origin.returning;
-  if (loading) tracker_.observe(contact_statuses(model));
+  if (loading) tracker_.observe(contact_statuses(model, analysis.model_state()));
   if (loading && ramp_end) {
-    write(tracker_.at_peak(report.origin.cycle, take_strand_snapshot(model)));
+    write(tracker_.at_peak(report.origin.cycle, take_strand_snapshot(model, analysis.model_state())));
   } else if (ramp_end) {
     // The state a following loading half starts from (V = 0 after the tension ramp or a returning half).
-    tracker_.set_start(take_strand_snapshot(model));
+    tracker_.set_start(take_strand_snapshot(model, analysis.model_state()));
   }
 }
 

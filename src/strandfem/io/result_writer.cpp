@@ -232,16 +232,16 @@ void ResultWriter::write_vtu(const StaticAnalysis& analysis, double time) {
   const char* names[6] = {"axial_force_N", "shear_force_2_N", "shear_force_3_N", "torsion_Nmm", "bending_moment_2_Nmm", "bending_moment_3_Nmm"};
   for (int c = 0; c < 6; ++c) {
     out << "<DataArray type=\"Float64\" Name=\"" << names[c] << "\" format=\"ascii\">\n";
-    for (const BeamElement& e : model.elements)
-      out << fmt::format("{:.9g}\n{:.9g}\n", e.points()[0].resultants[c], e.points()[1].resultants[c]);
+    for (const BeamElementState& e : analysis.model_state().elements)
+      out << fmt::format("{:.9g}\n{:.9g}\n", e.points[0].resultants[c], e.points[1].resultants[c]);
     out << "</DataArray>\n";
   }
   out << "<DataArray type=\"Float64\" Name=\"axial_strain\" format=\"ascii\">\n";
-  for (const BeamElement& e : model.elements)
-    out << fmt::format("{:.9g}\n{:.9g}\n", e.points()[0].strain[0], e.points()[1].strain[0]);
+  for (const BeamElementState& e : analysis.model_state().elements)
+    out << fmt::format("{:.9g}\n{:.9g}\n", e.points[0].strain[0], e.points[1].strain[0]);
   out << "</DataArray>\n";
   // Section-point fields reduced per element (both cells of an element carry its values).
-  const std::vector<ElementResult> reduced = element_results(model);
+  const std::vector<ElementResult> reduced = element_results(model, analysis.model_state());
   const std::array<std::pair<const char*, double ElementResult::*>, 4> fields = {{
       {"von_mises_max_MPa", &ElementResult::max_von_mises},
       {"von_mises_mean_MPa", &ElementResult::mean_von_mises},

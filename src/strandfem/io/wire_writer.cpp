@@ -31,7 +31,7 @@ void WireWriter::on_increment(const StaticAnalysis& analysis, const IncrementRep
   if (!case_.output.wires) return;
   const bool step_end = report.step_fraction >= 1.0 - 1e-12;
   if (increment_count % case_.output.contacts_every != 0 && !step_end) return;
-  for (const WireNodeResult& r : wire_node_results(analysis.model())) {
+  for (const WireNodeResult& r : wire_node_results(analysis.model(), analysis.model_state())) {
     csv_.stream() << fmt::format("{},{},{:.8g},{},{},{},{:.6f},{:.4f},{:.6f},{:.8e},{:.8e},{:.8e},{:.8e},{:.6e},{:.6e}\n", report.step + 1,
                         report.increment, load_factor, r.wire, r.layer, r.node, r.z, r.angle_degrees, r.radius, r.resultants[0],
                         r.resultants[4], r.resultants[5], r.resultants[3], r.max_von_mises, r.max_plastic_strain);

@@ -14,11 +14,11 @@ double angle_of(const Vec3& x) {
 }
 }  // namespace
 
-StrandSnapshot take_strand_snapshot(const Model& model) {
+StrandSnapshot take_strand_snapshot(const Model& model, const ModelState& model_state) {
   StrandSnapshot s;
-  for (const WireNodeResult& r : wire_node_results(model))
+  for (const WireNodeResult& r : wire_node_results(model, model_state))
     s.wires.push_back({r.node, r.wire, r.layer, r.z, r.angle_degrees, r.radius, r.resultants[0]});
-  const ContactSet& contacts = model.contacts;
+  const ContactSet& contacts = model_state.contacts;
   const Mesh& mesh = model.mesh;
   s.contacts.reserve(contacts.points().size());
   for (std::size_t i = 0; i < contacts.points().size(); ++i) {
@@ -50,10 +50,10 @@ StrandSnapshot take_strand_snapshot(const Model& model) {
   return s;
 }
 
-std::vector<int> contact_statuses(const Model& model) {
+std::vector<int> contact_statuses(const Model& model, const ModelState& model_state) {
   std::vector<int> out;
-  out.reserve(model.contacts.responses().size());
-  for (const ContactResponse& r : model.contacts.responses()) out.push_back(static_cast<int>(r.status));
+  out.reserve(model_state.contacts.responses().size());
+  for (const ContactResponse& r : model_state.contacts.responses()) out.push_back(static_cast<int>(r.status));
   return out;
 }
 

@@ -3,7 +3,7 @@
 #pragma once
 #include <vector>
 
-#include "strandfem/solver/model.hpp"
+#include "strandfem/solver/model_state.hpp"
 
 namespace strandfem {
 
@@ -37,9 +37,9 @@ struct StrandSnapshot {
   std::vector<ContactSample> contacts;
 };
 
-StrandSnapshot take_strand_snapshot(const Model& model);
+StrandSnapshot take_strand_snapshot(const Model& model, const ModelState& model_state);
 
 // Statuses of the contact points now (ContactStatus as int), in point order.
-std::vector<int> contact_statuses(const Model& model);
+std::vector<int> contact_statuses(const Model& model, const ModelState& model_state);
 
 }  // namespace strandfem

@@ -6,12 +6,12 @@
 
 namespace strandfem {
 
-std::vector<ElementResult> element_results(const Model& model) {
+std::vector<ElementResult> element_results(const Model& model, const ModelState& model_state) {
   std::vector<ElementResult> out(model.elements.size());
   for (std::size_t k = 0; k < model.elements.size(); ++k) {
     const BeamElement& e = model.elements[k];
     ElementResult& r = out[k];
-    for (const BeamIntegrationPoint& p : e.points()) {
+    for (const SectionPointState& p : model_state.elements[k].points) {
       const SectionPointSummary s = e.section().summary(p.strain, p.committed);
       r.max_von_mises = std::max(r.max_von_mises, s.max_von_mises);
       r.max_plastic_strain = std::max(r.max_plastic_strain, s.max_plastic_strain);
@@ -22,7 +22,7 @@ std::vector<ElementResult> element_results(const Model& model) {
   return out;
 }
 
-std::vector<WireNodeResult> wire_node_results(const Model& model) {
+std::vector<WireNodeResult> wire_node_results(const Model& model, const ModelState& model_state) {
   const Mesh& mesh = model.mesh;
   struct Accumulator {
     Vec6 sum = Vec6::Zero();
@@ -30,14 +30,16 @@ std::vector<WireNodeResult> wire_node_results(const Model& model) {
     double max_von_mises = 0, max_plastic_strain = 0;
   };
   std::vector<Accumulator> at(mesh.nodes.size());
-  for (const BeamElement& e : model.elements) {
+  for (std::size_t k = 0; k < model.elements.size(); ++k) {
+    const BeamElement& e = model.elements[k];
+    const std::array<SectionPointState, 2>& points = model_state.elements[k].points;
     std::array<SectionPointSummary, 2> summary;
-    for (int g = 0; g < 2; ++g) summary[g] = e.section().summary(e.points()[g].strain, e.points()[g].committed);
+    for (int g = 0; g < 2; ++g) summary[g] = e.section().summary(points[g].strain, points[g].committed);
     // (node slot, point) pairs: end nodes take the nearer point, the middle node both.
     const std::array<std::pair<int, int>, 4> links = {{{0, 0}, {1, 0}, {1, 1}, {2, 1}}};
     for (const auto& [slot, g] : links) {
       Accumulator& a = at[e.nodes()[slot]];
-      a.sum += e.points()[g].resultants;
+      a.sum += points[g].resultants;
       ++a.count;
       a.max_von_mises = std::max(a.max_von_mises, summary[g].max_von_mises);
       a.max_plastic_strain = std::max(a.max_plastic_strain, summary[g].max_plastic_strain);

@@ -2,7 +2,7 @@
 #pragma once
 #include <vector>
 
-#include "strandfem/solver/model.hpp"
+#include "strandfem/solver/model_state.hpp"
 
 namespace strandfem {
 
@@ -12,7 +12,7 @@ struct ElementResult {
   double max_plastic_strain = 0, mean_plastic_strain = 0;
 };
 
-std::vector<ElementResult> element_results(const Model& model);
+std::vector<ElementResult> element_results(const Model& model, const ModelState& model_state);
 
 // Section results at a wire node: resultants [N, Q2, Q3, T, M2, M3] (section axes; N and N mm) averaged over
 // the section points next to the node (end nodes: the nearer point of each adjacent element; middle nodes:
@@ -27,6 +27,6 @@ struct WireNodeResult {
 };
 
 // Along every wire, node by node in wire order.
-std::vector<WireNodeResult> wire_node_results(const Model& model);
+std::vector<WireNodeResult> wire_node_results(const Model& model, const ModelState& model_state);
 
 }  // namespace strandfem

@@ -46,8 +46,8 @@ void StaticAnalysis::save_state(ArchiveWriter& out) const {
   out.value(energies_);
   out.vector(committed_external_);
   out.section("elements");
-  for (const BeamElement& e : model_.elements) e.save_history(out);
-  for (const Interaction* interaction : model_.interactions()) interaction->save_state(out);
+  for (const BeamElementState& e : model_state_.elements) e.save_history(out);
+  for (const Interaction* interaction : model_state_.interactions()) interaction->save_state(out);
   out.section("end");
 }
 
@@ -78,14 +78,14 @@ void StaticAnalysis::restore_state(ArchiveReader& in) {
     in.vector(committed_external_);
   }
   in.section("elements");
-  for (BeamElement& e : model_.elements) e.restore_history(in);
-  for (Interaction* interaction : model_.interactions()) interaction->restore_state(in, model_.mesh, committed_state_);
+  for (BeamElementState& e : model_state_.elements) e.restore_history(in);
+  for (Interaction* interaction : model_state_.interactions()) interaction->restore_state(in, model_.mesh, committed_state_);
   in.section("end");
   progress_ = p;
   state_ = committed_state_;
   applied_motion_ = committed_motion_;
   build_pattern();  // the interactions' element pairs of the checkpoint (not a rebuild the run would count)
-  assembler_->assemble(model_, state_, internal_forces_, nullptr);
+  assembler_->assemble(model_, model_state_, state_, internal_forces_, nullptr);
   committed_forces_ = internal_forces_;
   // Version 1 did not keep the applied loads: the converged internal forces balance them at the free DOFs.
   if (version == 1) committed_external_ = internal_forces_;

@@ -6,7 +6,7 @@
 
 namespace strandfem {
 
-Assembler::Assembler(const Model& model, const DofMap& dofs) : dofs_(dofs) {
+Assembler::Assembler(const Model& model, const ModelState& model_state, const DofMap& dofs) : dofs_(dofs) {
   const int n = dofs.equation_count;
   std::vector<std::vector<int>> rows_of_column(n);
   auto effective_equation = [&](int node, int component) {
@@ -23,7 +23,7 @@ Assembler::Assembler(const Model& model, const DofMap& dofs) : dofs_(dofs) {
           }
   };
   for (const MeshElement& e : model.mesh.elements) couple(e.nodes, e.nodes);
-  for (const Interaction* interaction : model.interactions())
+  for (const Interaction* interaction : model_state.interactions())
     for (const auto& [e, f] : interaction->element_pairs()) {
       const auto &a = model.mesh.elements[e].nodes, &b = model.mesh.elements[f].nodes;
       couple(a, b);
@@ -59,7 +59,7 @@ Assembler::Assembler(const Model& model, const DofMap& dofs) : dofs_(dofs) {
   outputs_.resize(model.mesh.elements.size());
   const std::int64_t element_count = static_cast<std::int64_t>(model.mesh.elements.size());
   std::vector<std::pair<int, int>> pairs;
-  for (const Interaction* interaction : model.interactions())
+  for (const Interaction* interaction : model_state.interactions())
     pairs.insert(pairs.end(), interaction->element_pairs().begin(), interaction->element_pairs().end());
   for (const auto& [e, f] : pairs) {
     const auto &a = model.mesh.elements[e].nodes, &b = model.mesh.elements[f].nodes;
@@ -118,13 +118,13 @@ void Assembler::scatter(const Model& model, const std::vector<NodeState>& state,
 }
 
 // Interaction contributions act on their six nodes; sequential, in order (deterministic).
-void Assembler::add_interactions(const Model& model, const std::vector<NodeState>& state,
+void Assembler::add_interactions(const Model& model, const ModelState& model_state, const std::vector<NodeState>& state,
                                  std::vector<double>& nodal_forces, std::vector<double>& slave_forces,
                                  std::vector<double>* values) {
   const bool with_tangent = values != nullptr;
   const std::int64_t element_count = static_cast<std::int64_t>(model.mesh.elements.size());
   contributions_.clear();
-  for (const Interaction* interaction : model.interactions()) interaction->contributions(model.mesh, contributions_);
+  for (const Interaction* interaction : model_state.interactions()) interaction->contributions(model.mesh, contributions_);
   for (const PairContribution& c : contributions_) {
     const auto cached = contact_pair_.find(c.elements.first * element_count + c.elements.second);
     if (cached != contact_pair_.end()) {
@@ -144,17 +144,17 @@ void Assembler::add_interactions(const Model& model, const std::vector<NodeState
   }
 }
 
-void Assembler::assemble(Model& model, const std::vector<NodeState>& state, std::vector<double>& nodal_forces,
-                         std::vector<double>* values, const ElementDamping& damping) {
+void Assembler::assemble(const Model& model, ModelState& model_state, const std::vector<NodeState>& state,
+                         std::vector<double>& nodal_forces, std::vector<double>* values, const ElementDamping& damping) {
   const bool damped = damping.stabilization && damping.factor > 0;
   const bool with_tangent = values != nullptr;
   const int element_count = static_cast<int>(model.elements.size());
 #pragma omp parallel for schedule(dynamic, 8)
   for (int k = 0; k < element_count; ++k) {
-    BeamElement& element = model.elements[k];
+    const BeamElement& element = model.elements[k];
     std::array<NodeState, 3> local;
     for (int i = 0; i < 3; ++i) local[i] = state[element.nodes()[i]];
-    element.evaluate(local, with_tangent, outputs_[k]);
+    element.evaluate(local, model_state.elements[k], with_tangent, outputs_[k]);
     if (damped) {
       std::array<NodeState, 3> converged;
       for (int i = 0; i < 3; ++i) converged[i] = (*damping.converged)[element.nodes()[i]];
@@ -162,7 +162,7 @@ void Assembler::assemble(Model& model, const std::vector<NodeState>& state, std:
                                  with_tangent ? &outputs_[k].tangent : nullptr);
     }
   }
-  for (Interaction* interaction : model.interactions()) interaction->evaluate(model.mesh, state, with_tangent);
+  for (Interaction* interaction : model_state.interactions()) interaction->evaluate(model.mesh, state, with_tangent);
   const std::size_t node_count = model.mesh.nodes.size();
   nodal_forces.assign(6 * node_count, 0.0);
   std::vector<double> slave_forces(6 * node_count, 0.0);
@@ -173,7 +173,7 @@ void Assembler::assemble(Model& model, const std::vector<NodeState>& state, std:
     scatter<3>(model, state, model.elements[k].nodes(), outputs_[k].residual, with_tangent ? &K : nullptr, nodal_forces,
                slave_forces, values, &element_slots_[static_cast<std::size_t>(k) * 324]);
   }
-  add_interactions(model, state, nodal_forces, slave_forces, values);
+  add_interactions(model, model_state, state, nodal_forces, slave_forces, values);
   if (!with_tangent) return;
   // Rotation of the lever arm: d(arm x f)/dtheta_m = f^ arm^ (f: the slave's force, held fixed).
   for (std::size_t t = 0; t < model.ties.size(); ++t) {

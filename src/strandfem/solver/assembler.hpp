@@ -6,6 +6,7 @@
 
 #include "strandfem/solver/linear_solver.hpp"
 #include "strandfem/solver/model.hpp"
+#include "strandfem/solver/model_state.hpp"
 #include "strandfem/solver/stabilization.hpp"
 
 namespace strandfem {
@@ -15,21 +16,22 @@ namespace strandfem {
 // element order so the sums, and hence the results, do not depend on the thread count.
 class Assembler {
  public:
-  // The pattern couples each element's nodes and, for every pair of model.interactions()' element_pairs(), the
-  // nodes of the two elements.
-  Assembler(const Model& model, const DofMap& dofs);
+  // The pattern couples each element's nodes and, for every pair of the state's interactions' element_pairs(),
+  // the nodes of the two elements.
+  Assembler(const Model& model, const ModelState& model_state, const DofMap& dofs);
 
   const SparsePattern& pattern() const { return pattern_; }
 
   // Internal nodal forces (beam elements and contact points) in master space (6 per node: force, moment about the node; tied slaves'
   // forces moved to their masters) and, when values != nullptr, the tangent on free DOFs. With damping, each
   // element also carries the viscous stabilization's force.
-  void assemble(Model& model, const std::vector<NodeState>& state, std::vector<double>& nodal_forces,
-                std::vector<double>* values, const ElementDamping& damping = {});
+  // Element and contact histories are read from and trial values written to `model_state`.
+  void assemble(const Model& model, ModelState& model_state, const std::vector<NodeState>& state,
+                std::vector<double>& nodal_forces, std::vector<double>* values, const ElementDamping& damping = {});
 
  private:
-  void add_interactions(const Model& model, const std::vector<NodeState>& state, std::vector<double>& nodal_forces,
-                        std::vector<double>& slave_forces, std::vector<double>* values);
+  void add_interactions(const Model& model, const ModelState& model_state, const std::vector<NodeState>& state,
+                        std::vector<double>& nodal_forces, std::vector<double>& slave_forces, std::vector<double>* values);
   // Adds a block over `nodes` (6 DOFs each) to the global forces and tangent, moving tied slaves' rows and
   // columns to their masters; tied slaves' forces are also collected for the lever-arm term.
   template <int Nodes>

@@ -1,4 +1,4 @@
-// A complete model: mesh, beam elements, rigid ties, supports, load steps and solver options.
+// A model's definition: mesh, beam elements, rigid ties, supports, load steps, contact and solver options.
 #pragma once
 #include <string>
 #include <vector>
@@ -38,6 +38,7 @@ struct SolverOptions {
   void validate() const;                  // throws std::invalid_argument naming the bad option
 };
 
+// The definition of a model; its solution state (section and contact histories) is a ModelState.
 struct Model {
   Mesh mesh;
   std::vector<BeamElement> elements;
@@ -46,19 +47,9 @@ struct Model {
   std::vector<LoadStep> steps;
   SolverOptions options;
   ContactSettings contact_settings;  // contact.enabled = false: wires do not interact
-  ContactSet contacts;               // built by StaticAnalysis from contact_settings; owns contact histories
 
   // Builds one BeamElement per mesh element from the mesh's reference configuration.
   void build_elements();
-  // The interactions the solver drives beside the elements (wire contact when enabled).
-  std::vector<Interaction*> interactions() {
-    if (contacts.enabled()) return {&contacts};
-    return {};
-  }
-  std::vector<const Interaction*> interactions() const {
-    if (contacts.enabled()) return {&contacts};
-    return {};
-  }
 };
 
 // Degrees of freedom: each node has 6; slave nodes of rigid ties have none of their own (their motion

@@ -15,11 +15,11 @@ Mat3 inverse_left_jacobian(const Vec3& phi) {
 void ViscousStabilization::initialize(const std::vector<BeamElement>& elements, const std::vector<NodeState>& reference) {
   reference_stiffness_.resize(elements.size());
   for (std::size_t k = 0; k < elements.size(); ++k) {
-    BeamElement copy = elements[k];  // evaluating writes trial history: not on the model's element
+    BeamElementState initial = elements[k].initial_state();  // a scratch state: the analysis's is not touched
     std::array<NodeState, 3> nodes;
-    for (int i = 0; i < 3; ++i) nodes[i] = reference[copy.nodes()[i]];
+    for (int i = 0; i < 3; ++i) nodes[i] = reference[elements[k].nodes()[i]];
     BeamElement::Output out;
-    copy.evaluate(nodes, true, out);
+    elements[k].evaluate(nodes, initial, true, out);
     reference_stiffness_[k] = out.tangent;
   }
 }

@@ -39,8 +39,9 @@ StaticAnalysis::StaticAnalysis(Model& model) : model_(model) {
   model_.options.validate();
   if (model_.options.threads > 0) omp_set_num_threads(model_.options.threads);
   if (model_.elements.empty()) model_.build_elements();
+  model_state_ = ModelState::initial(model_);
   dofs_ = build_dof_map(model_);
-  model_.contacts.initialize(model_.mesh, model_.contact_settings);
+  model_state_.contacts.initialize(model_.mesh, model_.contact_settings);
   solver_ = make_linear_solver(model_.options.linear_solver);
   build_pattern();
   for (const MeshNode& n : model_.mesh.nodes) state_.push_back(n.reference);
@@ -118,7 +119,7 @@ bool StaticAnalysis::solve_linear(std::vector<double>& rhs) {
 }
 
 void StaticAnalysis::build_pattern() {
-  assembler_ = std::make_unique<Assembler>(model_, dofs_);
+  assembler_ = std::make_unique<Assembler>(model_, model_state_, dofs_);
   analyze();
 }
 
@@ -169,7 +170,7 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
     else s.rotation = (quaternion_from_rotation_vector(delta * Vec3::Unit(key.component - 3)) * s.rotation).normalized();
   }
   update_slaves();
-  for (Interaction* interaction : model_.interactions()) interaction->begin_increment();
+  for (Interaction* interaction : model_state_.interactions()) interaction->begin_increment();
   const int n = dofs_.equation_count;
   std::vector<double> rhs(n);
   double increment_displacement2 = 0;
@@ -182,7 +183,7 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
   };
   // Residual at the current state: rhs = -residual on free DOFs, the relative norm and the force test.
   auto evaluate_residual = [&]() {
-    assembler_->assemble(model_, state_, internal_forces_, nullptr, damping());
+    assembler_->assemble(model_, model_state_, state_, internal_forces_, nullptr, damping());
     double free_force2 = 0, free_moment2 = 0, ref_force2 = 0, ref_moment2 = 0;
     for (std::size_t node = 0; node < node_count; ++node) {
       if (dofs_.tie_of[node] >= 0) continue;
@@ -234,7 +235,7 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
   };
   auto accept_iterate = [&] {
     bool pattern_grew = false;
-    for (Interaction* interaction : model_.interactions()) {
+    for (Interaction* interaction : model_state_.interactions()) {
       interaction->accept_iterate(model_.mesh);
       pattern_grew |= interaction->element_pairs_grew();
     }
@@ -243,7 +244,7 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
   };
   auto changes_at_convergence = [&] {
     int changes = 0;
-    for (Interaction* interaction : model_.interactions()) changes += interaction->changes_at_convergence();
+    for (Interaction* interaction : model_state_.interactions()) changes += interaction->changes_at_convergence();
     return changes;
   };
   Residual current = evaluate_residual();
@@ -318,7 +319,7 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
     ++report.corrections;
     {
       const Timer timer(statistics_.assembly_seconds);
-      assembler_->assemble(model_, state_, internal_forces_, &values_, damping());
+      assembler_->assemble(model_, model_state_, state_, internal_forces_, &values_, damping());
     }
     if (!solve_linear(rhs)) return false;
     start = state_;
@@ -413,9 +414,9 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
       if (solve_increment(target, extrapolation, idle_step, ramps, report, on_progress)) {
         if (retrying_plain) p.extrapolation_failed = true;
         if (report.force_only) ++statistics_.force_only_acceptances;
-        for (BeamElement& e : model_.elements) e.commit();
+        for (BeamElementState& e : model_state_.elements) e.commit();
         bool pattern_changed = false;
-        for (Interaction* interaction : model_.interactions()) pattern_changed |= interaction->commit(model_.mesh, state_);
+        for (Interaction* interaction : model_state_.interactions()) pattern_changed |= interaction->commit(model_.mesh, state_);
         if (pattern_changed) rebuild_pattern();  // element pairs entered or left the pattern
         add_increment_work();
         previous_committed_state_ = committed_state_;
@@ -442,11 +443,11 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
         // Last: the callback may save a checkpoint, which must hold the progress as it now stands.
         if (on_increment) on_increment(report);
       } else {
-        for (BeamElement& e : model_.elements) e.revert();
-        for (Interaction* interaction : model_.interactions()) interaction->revert();
+        for (BeamElementState& e : model_state_.elements) e.revert();
+        for (Interaction* interaction : model_state_.interactions()) interaction->revert();
         state_ = committed_state_;
         applied_motion_ = committed_motion_;
-        assembler_->assemble(model_, state_, internal_forces_, nullptr);
+        assembler_->assemble(model_, model_state_, state_, internal_forces_, nullptr);
         // An extrapolated predictor can lead Newton astray where the plain one converges at the same size
         // (past a yield knee the last increment's motion is a poor guide): retry once without it before cutting.
         if (report.extrapolated) {

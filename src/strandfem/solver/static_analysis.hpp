@@ -71,6 +71,8 @@ class StaticAnalysis {
   const std::vector<double>& internal_forces() const { return internal_forces_; }
   const DofMap& dofs() const { return dofs_; }
   const Model& model() const { return model_; }
+  // Element section histories and the contact set at the current state (the last converged one between runs).
+  const ModelState& model_state() const { return model_state_; }
   std::string linear_solver_name() const { return solver_->name(); }
   const AnalysisStatistics& statistics() const { return statistics_; }
   const EnergyBalance& energies() const { return energies_; }
@@ -117,6 +119,7 @@ class StaticAnalysis {
   bool solve_linear(std::vector<double>& rhs);  // rhs in, Newton correction out; false if the solve failed
 
   Model& model_;
+  ModelState model_state_;
   DofMap dofs_;
   std::unique_ptr<Assembler> assembler_;
   std::unique_ptr<LinearSolver> solver_;
