@@ -156,7 +156,10 @@ TEST(InputChecks, MalformedFilesAreBadInputNotInternalErrors) {
 TEST(InputChecks, ShippedCasesStillRead) {
   for (const char* c : {"cases/examples/seven_wire_axial.yaml", "cases/paper/wire_120.yaml", "cases/paper/axial/cardinal_1m.yaml",
                         "cases/verification/parallel_wires_friction.yaml", "cases/verification/straight_wire_axial_torque.yaml",
-                        "cases/verification/helical_wire_axial_torque.yaml"}) {
+                        "cases/verification/helical_wire_axial_torque.yaml", "cases/paper/bending/s32_case1.yaml",
+                        "cases/paper/bending/s32_case2.yaml", "cases/paper/bending/s32_case3.yaml",
+                        "cases/paper/bending/s32_case4.yaml", "cases/paper/bending/cardinal_fig9.yaml",
+                        "cases/paper/bending/cardinal_maps.yaml"}) {
     const ProgramRun r = run_program(std::string("info ") + case_path(c), "input_shipped");
     EXPECT_EQ(r.exit_code, 0) << c << ": " << r.stderr_text;
   }
