@@ -56,6 +56,33 @@ TEST(Resume, StoppedAndResumedRunMatchesUninterruptedOne) {
   EXPECT_EQ(profiles(full.output / "results"), profiles(results));
 }
 
+// A finished run can be given more cycles: resumed with the last step's cycle count raised, it continues into
+// the new cycles and matches a run made with that count from the start. Fewer cycles, or a change to an
+// earlier step, is refused.
+TEST(Resume, AddsCyclesToTheLastStepOnly) {
+  const ProgramRun full = run_case(kCase, "resume_more_full");
+  ASSERT_EQ(full.exit_code, 0) << full.stderr_text;
+  std::ifstream in(case_path(kCase));
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string two = "cycles: 2,";
+  ASSERT_NE(text.find(two), std::string::npos);
+  std::string one_cycle = text;
+  one_cycle.replace(one_cycle.find(two), two.size(), "cycles: 1,");
+  const std::string short_case = ::testing::TempDir() + "/resume_one_cycle.yaml";
+  std::ofstream(short_case) << one_cycle;
+  const auto results = std::filesystem::path(::testing::TempDir()) / "strandfem_resume_more" / "results";
+  const ProgramRun first = run_program("run " + short_case + " -q -o " + results.string(), "resume_more");
+  ASSERT_EQ(first.exit_code, 0) << first.stderr_text;
+  EXPECT_LT(read_csv(results / "history.csv").size(), read_csv(full.output / "results" / "history.csv").size());
+  const ProgramRun more = run_program("run " + case_path(kCase) + " -q -o " + results.string() + " --resume", "resume_more_cycles");
+  ASSERT_EQ(more.exit_code, 0) << more.stderr_text;
+  for (const char* file : {"history.csv", "loops.csv", "wires.csv"}) expect_same_rows(full.output / "results" / file, results / file);
+  const ProgramRun fewer = run_program("run " + short_case + " -q -o " + results.string() + " --resume", "resume_fewer_cycles");
+  EXPECT_EQ(fewer.exit_code, 2);
+  EXPECT_NE(fewer.stderr_text.find("steps[1].cycles is 1"), std::string::npos) << fewer.stderr_text;
+  EXPECT_NE(fewer.stderr_text.find("only add cycles to the last step"), std::string::npos) << fewer.stderr_text;
+}
+
 TEST(Resume, RefusesAFolderWithoutCheckpoint) {
   const ProgramRun run = run_case(kCase, "resume_nothing", "--resume");
   EXPECT_EQ(run.exit_code, 2);

@@ -13,23 +13,53 @@ namespace strandfem {
 namespace {
 constexpr const char* kMagic = "StrandFEM checkpoint";
 // 2: cyclic strand cases add the bending profiles' state (ProfileWriter); other cases read version 1 alike.
-constexpr int kFormatVersion = 2;
-}  // namespace
+// 3: the fingerprint leaves out the steps' cycle counts, which follow it, so that a resume may add cycles.
+constexpr int kFormatVersion = 3;
 
-std::string case_fingerprint(const CaseDefinition& c) {
-  // The case file's text as parsed (comments and layout do not count), without its solver and output blocks.
-  YAML::Node root = YAML::Load(c.resolved.value("case", std::string()));
-  if (root.IsMap()) {
-    root.remove("solver");
-    root.remove("output");
-  }
-  YAML::Emitter emitter;
-  emitter << root;
-  const std::string text = emitter.c_str();
+std::string fnv1a_hex(const std::string& text) {
   std::uint64_t hash = 14695981039346656037ULL;
   for (const unsigned char byte : text) hash = (hash ^ byte) * 1099511628211ULL;
   return fmt::format("{:016x}", hash);
 }
+
+// The case file's text as parsed (comments and layout do not count), without its solver and output blocks, and
+// without the steps' `cycles` when `with_cycles` is false.
+std::string fingerprint(const CaseDefinition& c, bool with_cycles) {
+  YAML::Node root = YAML::Load(c.resolved.value("case", std::string()));
+  if (root.IsMap()) {
+    root.remove("solver");
+    root.remove("output");
+    if (!with_cycles && root["steps"] && root["steps"].IsSequence())
+      for (YAML::Node step : root["steps"])
+        if (step.IsMap()) step.remove("cycles");
+  }
+  YAML::Emitter emitter;
+  emitter << root;
+  return fnv1a_hex(emitter.c_str());
+}
+
+std::vector<int> step_cycles(const CaseDefinition& c) {
+  std::vector<int> cycles;
+  for (const LoadStep& step : c.model.steps) cycles.push_back(step.cycles);
+  return cycles;
+}
+
+// A resume may raise the last step's cycle count (run more cycles after a finished or stopped run); any other
+// change of the cycles would move load ramps that have already run.
+void check_cycles(const std::vector<int>& saved, const std::vector<int>& now, const std::string& path) {
+  if (saved.size() != now.size()) throw ArchiveError(path + " was written for another case: resume needs the same case");
+  for (std::size_t i = 0; i < saved.size(); ++i) {
+    if (saved[i] == now[i]) continue;
+    const bool last = i + 1 == saved.size();
+    if (last && now[i] > saved[i]) continue;
+    throw ArchiveError(fmt::format("steps[{}].cycles is {} where the checkpoint in {} ran with {}: a resume may only add "
+                                   "cycles to the last step",
+                                   i, now[i], path, saved[i]));
+  }
+}
+}  // namespace
+
+std::string case_fingerprint(const CaseDefinition& c) { return fingerprint(c, false); }
 
 void write_checkpoint(const std::filesystem::path& directory, const CaseDefinition& c, const ResultWriter& writer,
                       const StaticAnalysis& analysis) {
@@ -37,6 +67,7 @@ void write_checkpoint(const std::filesystem::path& directory, const CaseDefiniti
   out.string(kMagic);
   out.value(kFormatVersion);
   out.string(case_fingerprint(c));
+  out.vector(step_cycles(c));
   writer.save_state(out);
   analysis.save_state(out);
   WholeFile file(directory / kCheckpointFileName);
@@ -56,10 +87,16 @@ ArchiveReader open_checkpoint(const std::filesystem::path& directory, const Case
     throw ArchiveError(path.string() + " is not a StrandFEM checkpoint");
   }
   const int version = reader.value<int>();
-  if (version != kFormatVersion && !(version == 1 && !has_cyclic_strand_step(c)))
+  if (version != kFormatVersion && version != 2 && !(version == 1 && !has_cyclic_strand_step(c)))
     throw ArchiveError(path.string() + " was written by another version of StrandFEM (checkpoint format differs)");
-  if (reader.string() != case_fingerprint(c))
-    throw ArchiveError(path.string() + " was written for another case, or this case file changed since: resume needs the same case");
+  const std::string another_case =
+      path.string() + " was written for another case, or this case file changed since: resume needs the same case";
+  if (version < 3) {  // the fingerprint then included the cycle counts
+    if (reader.string() != fingerprint(c, true)) throw ArchiveError(another_case);
+    return reader;
+  }
+  if (reader.string() != case_fingerprint(c)) throw ArchiveError(another_case);
+  check_cycles(reader.vector<int>(), step_cycles(c), path.string());
   return reader;
 }
 
