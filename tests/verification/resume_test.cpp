@@ -33,7 +33,8 @@ void expect_same_rows(const std::filesystem::path& a, const std::filesystem::pat
 TEST(Resume, StoppedAndResumedRunMatchesUninterruptedOne) {
   const ProgramRun full = run_case(kCase, "resume_full");
   ASSERT_EQ(full.exit_code, 0) << full.stderr_text;
-  // Stopped inside the second cycle, after its increments were cut back; resumed, stopped again, resumed.
+  // Stopped at the end of the pull (its increments were cut back), resumed and stopped again inside the first
+  // cycle, resumed to the end.
   const ProgramRun first = run_case(kCase, "resume_parts", "--stop-after 12");
   ASSERT_EQ(first.exit_code, 5) << first.stderr_text;
   const std::filesystem::path results = first.output / "results";
@@ -81,6 +82,18 @@ TEST(Resume, AddsCyclesToTheLastStepOnly) {
   EXPECT_EQ(fewer.exit_code, 2);
   EXPECT_NE(fewer.stderr_text.find("steps[1].cycles is 1"), std::string::npos) << fewer.stderr_text;
   EXPECT_NE(fewer.stderr_text.find("only add cycles to the last step"), std::string::npos) << fewer.stderr_text;
+}
+
+// A run stopped after a cycle closed already has that cycle's loop in loops.csv (rewritten as each cycle
+// closes, not only when the run ends).
+TEST(Resume, LoopsOfClosedCyclesAreWrittenBeforeTheRunEnds) {
+  const ProgramRun stopped = run_case(kCase, "resume_loops", "--stop-after 22");
+  ASSERT_EQ(stopped.exit_code, 5) << stopped.stderr_text;
+  int closed = 0;  // rows that end a returning half: a whole load fraction
+  for (const auto& r : read_csv(stopped.output / "results" / "history.csv"))
+    closed += r.at("returning") == 1 && std::abs(r.at("load_factor") - std::round(r.at("load_factor"))) < 1e-9;
+  ASSERT_EQ(closed, 1) << "the stop must fall after the first cycle and before the second closes";
+  EXPECT_EQ(read_csv(stopped.output / "results" / "loops.csv").size(), 1u);
 }
 
 TEST(Resume, RefusesAFolderWithoutCheckpoint) {

@@ -25,7 +25,10 @@ void BendingWriter::on_increment(const StaticAnalysis& analysis, const Increment
                                  double transverse_load, double midspan_deflection) {
   if (!active_) return;
   history_.push_back({report.origin.cycle, report.origin.returning, transverse_load, midspan_deflection, axial_force});
-  const bool peak = report.origin.cycle > 0 && !report.origin.returning && report.step_fraction >= 1.0 - 1e-12;
+  const bool ramp_end = report.step_fraction >= 1.0 - 1e-12;
+  // loops.csv is rewritten whenever a cycle closes, so that a long run shows its loops before it ends or stops.
+  if (report.origin.cycle > 0 && report.origin.returning && ramp_end) finish();
+  const bool peak = report.origin.cycle > 0 && !report.origin.returning && ramp_end;
   if (!peak) return;
   // The core's transverse deflection along the strand beside eq. 3.2 (x from the nearer clamp).
   const Model& model = analysis.model();
