@@ -71,6 +71,18 @@ TEST(FibrePlasticity, UniaxialCycleIsTheClosedFormBilinearKinematicLoop) {
   EXPECT_TRUE(reversed_yield_seen);
 }
 
+// Central differences of a fibre law's stress (strain -> stress) at `strain`.
+template <class Law>
+Mat3 finite_difference_tangent(const Law& stress_of, const Vec3& strain) {
+  Mat3 fd;
+  const double h = 1e-9;
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 d = h * Vec3::Unit(k);
+    fd.col(k) = (stress_of(strain + d) - stress_of(strain - d)) / (2 * h);
+  }
+  return fd;
+}
+
 TEST(FibrePlasticity, ConsistentTangentIsTheFiniteDifferenceOfTheReturn) {
   const Material m = steel(5500);
   FibrePlasticState committed;
@@ -82,14 +94,8 @@ TEST(FibrePlasticity, ConsistentTangentIsTheFiniteDifferenceOfTheReturn) {
     FibrePlasticState trial;
     const FibreResponse r = j2_fibre_return(strain, m, committed, trial);
     plastic_cases += r.yielding;
-    Mat3 fd;
-    const double h = 1e-9;
-    for (int k = 0; k < 3; ++k) {
-      FibrePlasticState scratch;
-      const Vec3 d = h * Vec3::Unit(k);
-      fd.col(k) = (j2_fibre_return(strain + d, m, committed, scratch).stress -
-                   j2_fibre_return(strain - d, m, committed, scratch).stress) / (2 * h);
-    }
+    const Mat3 fd = finite_difference_tangent(
+        [&](const Vec3& e) { FibrePlasticState scratch; return j2_fibre_return(e, m, committed, scratch).stress; }, strain);
     EXPECT_LT((fd - r.tangent).norm(), 1e-6 * r.tangent.norm()) << "strain " << strain.transpose();
     // The returned stress lies on the moved yield surface.
     if (r.yielding) EXPECT_NEAR(von_mises(r.stress - trial.back_stress), 1540.0, 1e-8 * 1540.0);
@@ -114,12 +120,12 @@ TEST(FibrePlasticity, TrueStressLawIsBilinearInLogarithmicStrainOverTheCurrentAr
     EXPECT_NEAR(r.stress[0], true_stress / (1 + strain), 1e-9 * 1540.0) << "strain " << strain;
   }
   EXPECT_LT(max_error, 1e-6 * 1540.0);
-  // At 7 % the section stress is 7.2 % under the engineering law with the same (sigma_y, Et).
-  FibrePlasticState none, scratch;
-  const double engineering = fibre_response(Vec3(0.07, 0, 0), steel(5500), none, scratch).stress[0];
   EXPECT_GT(state.equivalent_plastic_strain, 0.05);
-  FibrePlasticState fresh;
-  const double true_measure = fibre_response(Vec3(0.07, 0, 0), m, none, fresh).stress[0];
+  // At 7 % the section stress is 7.2 % under the engineering law with the same (sigma_y, Et).
+  const FibrePlasticState virgin;
+  FibrePlasticState scratch;
+  const double engineering = fibre_response(Vec3(0.07, 0, 0), steel(5500), virgin, scratch).stress[0];
+  const double true_measure = fibre_response(Vec3(0.07, 0, 0), m, virgin, scratch).stress[0];
   EXPECT_NEAR(true_measure / engineering, (1540 + 5500 * (std::log1p(0.07) - 1540 / 188000.0)) /
                                               (1540 + 5500 * (0.07 - 1540 / 188000.0)) / 1.07, 1e-9);
   // The wire section under uniform stretch carries that stress over its reference area.
@@ -139,14 +145,8 @@ TEST(FibrePlasticity, TrueStressTangentIsTheFiniteDifferenceOfTheResponse) {
     FibrePlasticState trial;
     const FibreResponse r = fibre_response(strain, m, committed, trial);
     plastic_cases += r.yielding;
-    Mat3 fd;
-    const double h = 1e-9;
-    for (int k = 0; k < 3; ++k) {
-      FibrePlasticState scratch;
-      const Vec3 d = h * Vec3::Unit(k);
-      fd.col(k) = (fibre_response(strain + d, m, committed, scratch).stress -
-                   fibre_response(strain - d, m, committed, scratch).stress) / (2 * h);
-    }
+    const Mat3 fd = finite_difference_tangent(
+        [&](const Vec3& e) { FibrePlasticState scratch; return fibre_response(e, m, committed, scratch).stress; }, strain);
     EXPECT_LT((fd - r.tangent).norm(), 1e-6 * r.tangent.norm()) << "strain " << strain.transpose();
   }
   EXPECT_GE(plastic_cases, 2);

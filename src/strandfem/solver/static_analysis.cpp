@@ -70,22 +70,27 @@ void StaticAnalysis::analyze() {
   fallback_analyzed_ = false;
 }
 
+KrylovResult StaticAnalysis::preconditioned_solve(std::vector<double>& rhs, int max_iterations) {
+  std::vector<double> x;
+  const KrylovResult k = gmres(assembler_->pattern(), values_, [this](std::vector<double>& v) { solver_->solve(v); }, rhs,
+                               x, model_.options.krylov_tolerance, max_iterations);
+  statistics_.krylov_iterations += k.iterations;
+  if (k.converged) {
+    ++statistics_.krylov_solves;
+    rhs = x;
+  }
+  return k;
+}
+
 bool StaticAnalysis::solve_linear(std::vector<double>& rhs) {
   const SolverOptions& opt = model_.options;
   const Timer timer(statistics_.linear_seconds);
   try {
     if (factorization_usable_ && opt.krylov_iterations > 0) {
-      std::vector<double> x;
-      const KrylovResult k = gmres(assembler_->pattern(), values_, [this](std::vector<double>& v) { solver_->solve(v); },
-                                   rhs, x, opt.krylov_tolerance, opt.krylov_iterations);
-      statistics_.krylov_iterations += k.iterations;
+      const KrylovResult k = preconditioned_solve(rhs, opt.krylov_iterations);
       // A preconditioner that needs more than half the allowed iterations has aged: refactor next time.
       if (k.iterations > opt.krylov_iterations / 2) factorization_usable_ = false;
-      if (k.converged) {
-        ++statistics_.krylov_solves;
-        rhs = x;
-        return true;
-      }
+      if (k.converged) return true;
     }
     solver_->factorize(values_);
     factorization_usable_ = true;
@@ -94,15 +99,7 @@ bool StaticAnalysis::solve_linear(std::vector<double>& rhs) {
       return true;
     }
     // Single-precision factors: GMRES on the tangent brings the correction to the double-precision tolerance.
-    std::vector<double> x;
-    const KrylovResult k = gmres(assembler_->pattern(), values_, [this](std::vector<double>& v) { solver_->solve(v); },
-                                 rhs, x, opt.krylov_tolerance, opt.refinement_iterations);
-    statistics_.krylov_iterations += k.iterations;
-    ++statistics_.krylov_solves;
-    if (k.converged) {
-      rhs = x;
-      return true;
-    }
+    if (preconditioned_solve(rhs, opt.refinement_iterations).converged) return true;
     // Too ill-conditioned for single precision: this tangent is factored and solved in double.
     factorization_usable_ = false;
     if (!fallback_solver_) fallback_solver_ = make_linear_solver("mumps");

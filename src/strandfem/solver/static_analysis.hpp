@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "strandfem/solver/assembler.hpp"
+#include "strandfem/solver/krylov.hpp"
 #include "strandfem/solver/model.hpp"
 #include "strandfem/solver/stabilization.hpp"
 
@@ -32,7 +33,7 @@ struct IncrementReport {
 // linear_statistics()).
 struct AnalysisStatistics {
   int newton_iterations = 0;   // tangent assemblies
-  int krylov_solves = 0;       // linear solves done by GMRES with an older factorization
+  int krylov_solves = 0;       // linear solves done by GMRES (older or single-precision factors)
   int krylov_iterations = 0;
   int pattern_rebuilds = 0;    // tangent patterns rebuilt and analyzed again (interaction pairs changed)
   int rejected_extrapolations = 0;  // extrapolated predictors worse than the plain one (not used)
@@ -117,6 +118,8 @@ class StaticAnalysis {
   void build_pattern();                        // pattern of the interactions' element pairs, then its analysis
   void rebuild_pattern();                      // build_pattern() because the pairs changed (counted)
   bool solve_linear(std::vector<double>& rhs);  // rhs in, Newton correction out; false if the solve failed
+  // GMRES on the current tangent preconditioned by the current factors; rhs becomes the solution if it converged.
+  KrylovResult preconditioned_solve(std::vector<double>& rhs, int max_iterations);
 
   Model& model_;
   ModelState model_state_;
