@@ -382,6 +382,38 @@ TEST(ContactSet, PatternHoldsOnlyPairsThatAreClosedOrNearlySo) {
   EXPECT_FALSE(contacts.element_pairs().empty());
 }
 
+// Pairs no longer needed stay in the pattern while they are at most a quarter of the needed ones (a change costs
+// an analysis and a fresh factorization); a point that closes again on such a pair does not widen the pattern.
+TEST(ContactSet, PatternKeepsAFewStalePairsUntilTheyAreAQuarterOfIt) {
+  const Mesh mesh = parallel_lines(12, 10, 100, 2.3);
+  ContactSettings settings;
+  settings.enabled = true;
+  ContactSet contacts;
+  contacts.initialize(mesh, settings);
+  ASSERT_TRUE(contacts.element_pairs().empty());
+  // The slave pressed 0.01 mm into the master where z < from_z, 0.3 mm apart beyond.
+  auto pressed_below = [&](double from_z) {
+    std::vector<NodeState> state = reference_state(mesh);
+    for (std::size_t n = 0; n < state.size(); ++n)
+      if (mesh.nodes[n].wire == 1 && state[n].position.z() < from_z) state[n].position.x() -= 0.31;
+    return state;
+  };
+  EXPECT_TRUE(contacts.commit(mesh, pressed_below(1e3)));
+  const auto all = contacts.element_pairs();
+  ASSERT_GE(all.size(), 10u);
+  // The last slave element lifts off: its pairs are stale but stay.
+  EXPECT_FALSE(contacts.commit(mesh, pressed_below(85)));
+  EXPECT_EQ(contacts.element_pairs(), all);
+  contacts.begin_increment();
+  contacts.evaluate(mesh, pressed_below(1e3), false);
+  contacts.accept_iterate(mesh);
+  EXPECT_FALSE(contacts.element_pairs_grew());  // closing again on pairs the pattern kept
+  // Half the slave lifts off: the stale pairs are too many and leave.
+  EXPECT_TRUE(contacts.commit(mesh, pressed_below(45)));
+  EXPECT_LT(contacts.element_pairs().size(), all.size() * 3 / 4);
+  for (const auto& [a, b] : contacts.element_pairs()) EXPECT_TRUE(std::count(all.begin(), all.end(), std::make_pair(a, b)));
+}
+
 TEST(ContactSet, InitialOverlapIsOffset) {
   const Mesh mesh = parallel_lines(2, 2, 20, 1.9);
   ContactSettings settings;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 
 #include "strandfem/contact/contact_search.hpp"
@@ -13,6 +14,8 @@ namespace strandfem {
 namespace {
 
 constexpr double kRangeTolerance = 1e-9;
+// Stale element pairs (no point near closing) stay in the pattern until they exceed this share of the needed ones.
+constexpr double kStalePatternFraction = 0.25;
 
 ElementCenterline<double> centerline(const Mesh& mesh, const std::vector<NodeState>& state, int element) {
   ElementCenterline<double> x;
@@ -363,21 +366,29 @@ bool ContactSet::commit(const Mesh& mesh, const std::vector<NodeState>& state) {
   }
   double moved = 0;
   for (std::size_t n = 0; n < state.size(); ++n) moved = std::max(moved, (state[n].position - searched_positions_[n]).norm());
-  const auto before = element_pairs_;
   if (moved > 0.5 * settings_.search_margin) search(mesh, state);
   responses_.resize(points_.size());
   evaluate(mesh, state, false);  // the committed state's forces and statuses, for output
   update_pattern_membership(true);
-  element_pairs_ = collect_element_pairs(mesh);
-  return element_pairs_ != before;
+  // The pattern keeps pairs that are no longer needed until they are a sizeable share of it: each change costs
+  // a new analysis and a fresh factorization, and under load cycles the same pairs come and go again.
+  const auto needed = collect_element_pairs(mesh);
+  if (std::includes(element_pairs_.begin(), element_pairs_.end(), needed.begin(), needed.end()) &&
+      element_pairs_.size() - needed.size() <= kStalePatternFraction * needed.size())
+    return false;
+  element_pairs_ = needed;
+  return true;
 }
 
 void ContactSet::accept_iterate(const Mesh& mesh) {
   activate_closed();
-  if (update_pattern_membership(false)) {
-    pairs_grew_ = true;
-    element_pairs_ = collect_element_pairs(mesh);
-  }
+  if (!update_pattern_membership(false)) return;
+  const auto needed = collect_element_pairs(mesh);
+  if (std::includes(element_pairs_.begin(), element_pairs_.end(), needed.begin(), needed.end())) return;
+  std::vector<std::pair<int, int>> widened;
+  std::set_union(element_pairs_.begin(), element_pairs_.end(), needed.begin(), needed.end(), std::back_inserter(widened));
+  element_pairs_ = std::move(widened);
+  pairs_grew_ = true;
 }
 
 bool ContactSet::update_pattern_membership(bool may_leave) {

@@ -61,11 +61,13 @@ class ContactSet final : public Interaction {
 
   // Converged increment at `state`: writes histories (stick points, slip), moves crossings to the
   // neighbouring element, re-runs the search when nodes moved more than half the margin. Returns true
-  // when the set of coupled element pairs changed (the tangent's pattern must be rebuilt).
+  // when element_pairs() changed (the tangent's pattern must be rebuilt): a pair is needed that it lacks, or
+  // too many of its pairs are no longer needed.
   bool commit(const Mesh& mesh, const std::vector<NodeState>& state) override;
 
   // Mesh element pairs that contact may couple (the sparsity pattern): those of points closed or nearly so
-  // (ContactSettings::pattern_margin).
+  // (ContactSettings::pattern_margin), the neighbour element toward which a crossing is near, and pairs no longer
+  // needed until they are a quarter of the needed ones (a change costs an analysis and a factorization).
   const std::vector<std::pair<int, int>>& element_pairs() const override { return element_pairs_; }
   // Lateral pairs: (slave element, master wire) line-contact groups (the paper's "contact pairs").
   int lateral_pair_count() const { return static_cast<int>(groups_.size()); }
