@@ -1,6 +1,7 @@
 // Contact kinematics, force law and linearization against finite differences and closed-form limits.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "strandfem/contact/contact_set.hpp"
@@ -55,22 +56,27 @@ std::array<ElementPose<double>, 2> moved(const PairFixture& f, const Vector36& i
 }
 
 // The response after the increment, with the parameters solved there.
+// A crossing pinned on one wire (PinnedParameter) keeps that wire's parameter at p.xi (slave) or p.eta (master).
 ContactResponse response_at(const ContactPoint& p, const PairFixture& f, const Vector36& increment, bool tangent,
-                            const Vec3& axis) {
+                            const Vec3& axis, PinnedParameter pinned = PinnedParameter::kNone) {
   const auto poses = moved(f, increment);
-  double xi = p.kind == ContactKind::kLine ? p.xi : 0.0, eta = 0.0;
-  bool ok = p.kind == ContactKind::kLine ? project_point(centerline_point(poses[0].x, xi), poses[1].x, eta)
-                                          : closest_points(poses[0].x, poses[1].x, xi, eta);
+  const bool slave_fixed = p.kind == ContactKind::kLine || pinned == PinnedParameter::kSlave;
+  double xi = slave_fixed ? p.xi : 0.0, eta = pinned == PinnedParameter::kMaster ? p.eta : 0.0;
+  bool ok = slave_fixed                            ? project_point(centerline_point(poses[0].x, xi), poses[1].x, eta)
+            : pinned == PinnedParameter::kMaster ? project_point(centerline_point(poses[1].x, eta), poses[0].x, xi)
+                                                 : closest_points(poses[0].x, poses[1].x, xi, eta);
   EXPECT_TRUE(ok);
-  return evaluate_contact(p, poses[0], poses[1], 0, xi, eta, axis, tangent);
+  return evaluate_contact(p, poses[0], poses[1], p.element_a, 0, xi, eta, axis, tangent, pinned);
 }
-ContactResponse response_at(const ContactPoint& p, const PairFixture& f, bool tangent, const Vec3& axis) {
-  return response_at(p, f, Vector36::Zero(), tangent, axis);
+ContactResponse response_at(const ContactPoint& p, const PairFixture& f, bool tangent, const Vec3& axis,
+                            PinnedParameter pinned = PinnedParameter::kNone) {
+  return response_at(p, f, Vector36::Zero(), tangent, axis, pinned);
 }
 
 // Central differences of the forces and moments against the exact tangent (translations and spins).
-double tangent_error(const ContactPoint& p, const PairFixture& f, const Vec3& axis, ContactStatus expected) {
-  const ContactResponse r = response_at(p, f, true, axis);
+double tangent_error(const ContactPoint& p, const PairFixture& f, const Vec3& axis, ContactStatus expected,
+                     PinnedParameter pinned = PinnedParameter::kNone) {
+  const ContactResponse r = response_at(p, f, true, axis, pinned);
   EXPECT_EQ(r.status, expected);
   ContactMatrix fd;
   const double h = 1e-6;
@@ -78,15 +84,17 @@ double tangent_error(const ContactPoint& p, const PairFixture& f, const Vec3& ax
     Vector36 plus = Vector36::Zero(), minus = Vector36::Zero();
     plus[k] = h;
     minus[k] = -h;
-    fd.col(k) = (response_at(p, f, plus, false, axis).force - response_at(p, f, minus, false, axis).force) / (2 * h);
+    fd.col(k) = (response_at(p, f, plus, false, axis, pinned).force - response_at(p, f, minus, false, axis, pinned).force) /
+                (2 * h);
   }
   return (fd - r.tangent).cwiseAbs().maxCoeff() / r.tangent.cwiseAbs().maxCoeff();
 }
 
 // Stick points offset from the current contact point by `offset` in both parameters and turned by
 // `turn` (rad) about each wire's section axis 1, as a committed history would hold them.
-void set_stick(ContactPoint& p, const PairFixture& f, double offset, double turn = 0.0) {
-  const ContactResponse r = response_at(p, f, false, Vec3::UnitX());
+void set_stick(ContactPoint& p, const PairFixture& f, double offset, double turn = 0.0,
+               PinnedParameter pinned = PinnedParameter::kNone) {
+  const ContactResponse r = response_at(p, f, false, Vec3::UnitX(), pinned);
   p.history.closed = true;
   p.history.stick_a = wire_coordinate(0, r.xi + offset);
   p.history.stick_b = wire_coordinate(0, r.eta - 0.7 * offset);
@@ -175,6 +183,24 @@ TEST(ContactTangent, PointContactFrictionlessStickSlipOrthotropic) {
     EXPECT_LT(tangent_error(p, f, axis, ContactStatus::kSlip), 1e-6) << "slip, angle " << angle;
     p.mu2 = 0.1;
     EXPECT_LT(tangent_error(p, f, axis, ContactStatus::kSlip), 1e-6) << "orthotropic slip, angle " << angle;
+  }
+}
+
+// A crossing held at a node where a wire's elements meet at an angle: one parameter fixed, the other wire's
+// projected; the tangent still matches finite differences, frictionless, sticking and slipping.
+TEST(ContactTangent, CrossingPinnedAtANodeOfEitherWire) {
+  const Vec3 axis = Vec3(1.0, 0.3, 0.2).normalized();
+  PairFixture f(M_PI / 2, 1.8);
+  for (PinnedParameter pinned : {PinnedParameter::kSlave, PinnedParameter::kMaster}) {
+    ContactPoint p = make_point(ContactKind::kPoint);
+    p.xi = 0.08;  // used when the slave is pinned (the free closest point lies near 0)
+    p.eta = -0.06;  // used when the master is pinned
+    const int which = static_cast<int>(pinned);
+    EXPECT_LT(tangent_error(p, f, axis, ContactStatus::kStick, pinned), 1e-6) << "frictionless, pinned " << which;
+    set_stick(p, f, 0.005, 0.002, pinned);
+    EXPECT_LT(tangent_error(p, f, axis, ContactStatus::kStick, pinned), 1e-6) << "stick, pinned " << which;
+    set_stick(p, f, 0.2, 0.1, pinned);
+    EXPECT_LT(tangent_error(p, f, axis, ContactStatus::kSlip, pinned), 1e-6) << "slip, pinned " << which;
   }
 }
 
@@ -412,6 +438,47 @@ TEST(ContactSet, PatternKeepsAFewStalePairsUntilTheyAreAQuarterOfIt) {
   EXPECT_TRUE(contacts.commit(mesh, pressed_below(45)));
   EXPECT_LT(contacts.element_pairs().size(), all.size() * 3 / 4);
   for (const auto& [a, b] : contacts.element_pairs()) EXPECT_TRUE(std::count(all.begin(), all.end(), std::make_pair(a, b)));
+}
+
+// A wire slides across a node where the other wire's two straight elements meet at an angle (a V). Near the node
+// the closest point of each element lies past its end; the crossing is then held at the node, so the gap is the
+// true distance between the wires all along, without the jump an element's extrapolation beyond its end gave
+// when the crossing moved over (docs/theory.md, "Crossings moving to the next element").
+TEST(ContactSet, CrossingSlidesOverAKinkWithAContinuousGap) {
+  const double length = 20, slope = 0.2, offset = -2.05;  // V apex at (0, 0, 10); the other wire along y at x = offset
+  Mesh mesh;
+  mesh.sections.push_back(std::make_unique<ElasticSection>(SectionGeometry::circle(2.0, 0.3), Material{200000, 0.3, 0, "steel"}));
+  mesh.add_line("kinked", 1, 0, 0, 2, [&](double t) {
+    return std::make_pair(Vec3(slope * std::abs(t - 0.5) * length, 0, t * length), Mat3::Identity());
+  });
+  auto across_at = [&](double z) {
+    return [z, offset](double t) { return std::make_pair(Vec3(offset, 20.0 * t - 10.0, z), Mat3::Identity()); };
+  };
+  mesh.add_line("across", 2, 0, 0, 1, across_at(8.0));
+  ContactSettings settings;
+  settings.enabled = true;
+  ContactSet contacts;
+  contacts.initialize(mesh, settings);
+  ASSERT_EQ(contacts.radial_point_count(), 1);
+  // Distance in the x-z plane from the other wire's axis to the V (two segments), minus the radii.
+  auto true_gap = [&](double z) {
+    auto to_segment = [&](double x0, double z0, double x1, double z1) {
+      const double dx = x1 - x0, dz = z1 - z0;
+      const double s = std::clamp(((offset - x0) * dx + (z - z0) * dz) / (dx * dx + dz * dz), 0.0, 1.0);
+      return std::hypot(offset - x0 - s * dx, z - z0 - s * dz);
+    };
+    return std::min(to_segment(slope * 10, 0, 0, 10), to_segment(0, 10, slope * 10, 20)) - 2.0;
+  };
+  std::vector<NodeState> state = reference_state(mesh);
+  for (double z : {8.0, 9.0, 9.5, 9.7, 9.9, 10.0, 10.1, 10.3, 10.5, 11.0, 12.0}) {
+    for (std::size_t n = 0; n < state.size(); ++n)
+      if (mesh.nodes[n].wire == 1) state[n].position.z() = z;
+    contacts.evaluate(mesh, state, false);
+    const auto it = std::find_if(contacts.points().begin(), contacts.points().end(),
+                                 [](const ContactPoint& p) { return p.kind == ContactKind::kPoint; });
+    const ContactResponse& r = contacts.responses()[it - contacts.points().begin()];
+    EXPECT_NEAR(r.gap, true_gap(z), 1e-9) << "z = " << z;
+  }
 }
 
 TEST(ContactSet, InitialOverlapIsOffset) {

@@ -78,18 +78,20 @@ Vec3 section_direction(const ElementPose<double>& e, double xi, const Vec3& outw
 }
 
 ContactResponse evaluate_contact(const ContactPoint& point, const ElementPose<double>& a, const ElementPose<double>& b,
-                                 int element_b, double xi, double eta, const Vec3& axis, bool with_tangent) {
+                                 int element_a, int element_b, double xi, double eta, const Vec3& axis, bool with_tangent,
+                                 PinnedParameter pinned) {
   ContactResponse r;
+  r.element_a = element_a;
   r.element_b = element_b;
   r.xi = xi;
   r.eta = eta;
   // Stick points in the parameters of the elements evaluated now (may lie slightly outside [-1, 1]).
   StickAnchor anchor;
-  anchor.xi = point.kind == ContactKind::kLine ? xi : element_parameter(point.history.stick_a, point.element_a);
+  anchor.xi = point.kind == ContactKind::kLine ? xi : element_parameter(point.history.stick_a, element_a);
   anchor.eta = element_parameter(point.history.stick_b, element_b);
   anchor.direction_a = point.history.stick_direction_a;
   anchor.direction_b = point.history.stick_direction_b;
-  const ContactForces<double> f = contact_forces<double>(point, a, b, xi, eta, anchor, axis);
+  const ContactForces<double> f = contact_forces<double>(point, a, b, xi, eta, anchor, axis, pinned);
   r.status = f.status;
   r.gap = f.gap;
   r.normal = Vec3(f.normal[0], f.normal[1], f.normal[2]);
@@ -109,10 +111,10 @@ ContactResponse evaluate_contact(const ContactPoint& point, const ElementPose<do
   // Rotations enter only through friction (surface stick points, moment arms): without it, translations suffice.
   if (point.history.closed && point.mu1 > 0) {
     const auto poses = lift_poses<36>(a, b);
-    fill_tangent<36>(contact_forces(point, poses[0], poses[1], xi, eta, anchor, axis), r.tangent);
+    fill_tangent<36>(contact_forces(point, poses[0], poses[1], xi, eta, anchor, axis, pinned), r.tangent);
   } else {
     const auto poses = lift_poses<18>(a, b);
-    fill_tangent<18>(contact_forces(point, poses[0], poses[1], xi, eta, anchor, axis), r.tangent);
+    fill_tangent<18>(contact_forces(point, poses[0], poses[1], xi, eta, anchor, axis, pinned), r.tangent);
   }
   return r;
 }

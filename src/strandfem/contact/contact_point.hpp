@@ -73,6 +73,7 @@ struct ContactPoint {
 // Result of evaluating one contact point at a given state.
 struct ContactResponse {
   ContactStatus status = ContactStatus::kOpen;
+  int element_a = -1;              // slave element (index within wire a) used
   int element_b = -1;              // master element (index within wire b) used
   double xi = 0, eta = 0;
   double gap = 0;                  // mm, after the overlap offset
@@ -111,6 +112,10 @@ T normal_force(double stiffness, double smoothing, const T& gap) {
 // contact point for the given element poses and converged parameters xi, eta (doubles). T = double for the
 // value, a dual number for the tangent (the parameters then get one Newton step in T, which gives their
 // exact derivatives).
+// Which closest-point parameter of a crossing stays where it was given: at a node where a wire's two elements
+// meet at an angle, the closest point of each element lies past its end, and the crossing sits on the node.
+enum class PinnedParameter { kNone, kSlave, kMaster, kBoth };
+
 template <class T>
 struct ContactForces {
   std::array<V3<T>, 12> nodal;
@@ -122,17 +127,21 @@ struct ContactForces {
 
 template <class T>
 ContactForces<T> contact_forces(const ContactPoint& point, const ElementPose<T>& a, const ElementPose<T>& b, double xi0,
-                                double eta0, const StickAnchor& anchor, const Vec3& axis) {
+                                double eta0, const StickAnchor& anchor, const Vec3& axis,
+                                PinnedParameter pinned = PinnedParameter::kNone) {
   ContactForces<T> out;
   for (auto& f : out.nodal) f = {T(0.0), T(0.0), T(0.0)};
   T xi(xi0), eta(eta0);
-  if (point.kind == ContactKind::kPoint) {
+  if (point.kind == ContactKind::kPoint && pinned == PinnedParameter::kNone) {
     const auto next = closest_points_newton_step(a.x, b.x, xi, eta);
     xi = next[0];
     eta = next[1];
-  } else {
+  } else if (point.kind == ContactKind::kLine || pinned == PinnedParameter::kSlave) {
     eta = projection_newton_step(centerline_point(a.x, xi), b.x, eta);
     xi = T(xi0);
+  } else if (pinned == PinnedParameter::kMaster) {
+    xi = projection_newton_step(centerline_point(b.x, eta), a.x, xi);
+    eta = T(eta0);
   }
   const V3<T> xa = centerline_point(a.x, xi), xb = centerline_point(b.x, eta);
   const V3<T> d = sub(xa, xb);
@@ -182,7 +191,8 @@ ContactForces<T> contact_forces(const ContactPoint& point, const ElementPose<T>&
 
 // Value, outputs and (if with_tangent) exact tangent of a contact point.
 ContactResponse evaluate_contact(const ContactPoint& point, const ElementPose<double>& a, const ElementPose<double>& b,
-                                 int element_b, double xi, double eta, const Vec3& axis, bool with_tangent);
+                                 int element_a, int element_b, double xi, double eta, const Vec3& axis, bool with_tangent,
+                                 PinnedParameter pinned = PinnedParameter::kNone);
 
 // Section-fixed unit direction from the centerline at xi to the surface point along `outward` (a unit
 // vector in space): the stick direction of a point that closes or slides there.
