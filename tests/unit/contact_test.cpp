@@ -344,6 +344,13 @@ Mesh parallel_lines(int master_elements, int slave_elements, double length, doub
   return mesh;
 }
 
+// Contact on, every other setting at its default.
+ContactSettings enabled_contact() {
+  ContactSettings settings;
+  settings.enabled = true;
+  return settings;
+}
+
 std::vector<NodeState> reference_state(const Mesh& mesh) {
   std::vector<NodeState> state;
   for (const MeshNode& n : mesh.nodes) state.push_back(n.reference);
@@ -382,10 +389,8 @@ TEST(ContactSet, ParallelWiresCarryTheUniformLineLoad) {
 // a point that closes during Newton widens it at once, and the pairs leave again once the wires are apart.
 TEST(ContactSet, PatternHoldsOnlyPairsThatAreClosedOrNearlySo) {
   const Mesh mesh = parallel_lines(3, 2, 30, 2.3);  // gap 0.3 mm: within the search margin, beyond 0.01 (r_a + r_b)
-  ContactSettings settings;
-  settings.enabled = true;
   ContactSet contacts;
-  contacts.initialize(mesh, settings);
+  contacts.initialize(mesh, enabled_contact());
   ASSERT_EQ(contacts.lateral_pair_count(), 2);
   EXPECT_TRUE(contacts.element_pairs().empty());
   std::vector<NodeState> state = reference_state(mesh);
@@ -412,10 +417,8 @@ TEST(ContactSet, PatternHoldsOnlyPairsThatAreClosedOrNearlySo) {
 // an analysis and a fresh factorization); a point that closes again on such a pair does not widen the pattern.
 TEST(ContactSet, PatternKeepsAFewStalePairsUntilTheyAreAQuarterOfIt) {
   const Mesh mesh = parallel_lines(12, 10, 100, 2.3);
-  ContactSettings settings;
-  settings.enabled = true;
   ContactSet contacts;
-  contacts.initialize(mesh, settings);
+  contacts.initialize(mesh, enabled_contact());
   ASSERT_TRUE(contacts.element_pairs().empty());
   // The slave pressed 0.01 mm into the master where z < from_z, 0.3 mm apart beyond.
   auto pressed_below = [&](double from_z) {
@@ -455,10 +458,8 @@ TEST(ContactSet, CrossingSlidesOverAKinkWithAContinuousGap) {
     return [z, offset](double t) { return std::make_pair(Vec3(offset, 20.0 * t - 10.0, z), Mat3::Identity()); };
   };
   mesh.add_line("across", 2, 0, 0, 1, across_at(8.0));
-  ContactSettings settings;
-  settings.enabled = true;
   ContactSet contacts;
-  contacts.initialize(mesh, settings);
+  contacts.initialize(mesh, enabled_contact());
   ASSERT_EQ(contacts.radial_point_count(), 1);
   // Distance in the x-z plane from the other wire's axis to the V (two segments), minus the radii.
   auto true_gap = [&](double z) {
@@ -483,10 +484,8 @@ TEST(ContactSet, CrossingSlidesOverAKinkWithAContinuousGap) {
 
 TEST(ContactSet, InitialOverlapIsOffset) {
   const Mesh mesh = parallel_lines(2, 2, 20, 1.9);
-  ContactSettings settings;
-  settings.enabled = true;
   ContactSet contacts;
-  contacts.initialize(mesh, settings);
+  contacts.initialize(mesh, enabled_contact());
   std::vector<NodeState> state = reference_state(mesh);
   contacts.evaluate(mesh, state, false);
   // Touching with no force: the 0.1 mm nominal overlap is taken out.
@@ -512,10 +511,8 @@ TEST(ContactSet, RadialCrossingsMatchEquation24) {
   for (std::size_t i = 0; i < layers.size(); ++i)
     strand.layers.push_back({static_cast<int>(layers[i][0]), layers[i][1], "steel", layers[i][2] * deg, directions[i], 0});
   const Mesh mesh = mesh_strand(strand, MeshSpec{0, 22});
-  ContactSettings settings;
-  settings.enabled = true;
   ContactSet contacts;
-  contacts.initialize(mesh, settings);
+  contacts.initialize(mesh, enabled_contact());
   const std::vector<NodeState> reference = reference_state(mesh);
   for (int layer = 2; layer < static_cast<int>(strand.layers.size()); ++layer) {
     int total = 0, interior = 0;

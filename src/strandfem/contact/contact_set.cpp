@@ -272,6 +272,12 @@ ContactResponse ContactSet::evaluate_point(const Mesh& mesh, const std::vector<N
     bool pin_a = false, pin_b = false;
     int last_step_a = 0, last_step_b = 0;
     ElementPose<double> a, b;
+    // +1 / -1: the parameter lies past the element's end / start and there is a next / previous element.
+    auto step = [&](double parameter, int local, int wire) {
+      if (parameter > 1.0 && local + 1 < element_count(mesh, wire)) return 1;
+      if (parameter < -1.0 && local > 0) return -1;
+      return 0;
+    };
     for (int move = 0;; ++move) {
       a = pose(mesh, state, mesh.wires[p.wire_a].elements[element_a]);
       b = pose(mesh, state, mesh.wires[p.wire_b].elements[element_b]);
@@ -281,11 +287,6 @@ ContactResponse ContactSet::evaluate_point(const Mesh& mesh, const std::vector<N
       else if (pin_b && !pin_a) found = project_point(centerline_point(b.x, eta), a.x, xi);
       if (!found || std::abs(xi) > 1.5 || std::abs(eta) > 1.5) return open;
       if (move == kMaxCrossingMoves) break;
-      auto step = [&](double parameter, int local, int wire) {
-        if (parameter > 1.0 && local + 1 < element_count(mesh, wire)) return 1;
-        if (parameter < -1.0 && local > 0) return -1;
-        return 0;
-      };
       int step_a = pin_a ? 0 : step(xi, element_a, p.wire_a), step_b = pin_b ? 0 : step(eta, element_b, p.wire_b);
       bool pinned_now = false;
       if (step_a != 0 && step_a == -last_step_a) {  // back to the element just left: their node holds the crossing
@@ -377,7 +378,7 @@ bool ContactSet::commit(const Mesh& mesh, const std::vector<NodeState>& state) {
       continue;
     }
     if (h.closed && r.status != ContactStatus::kSlip) continue;  // sticking: the anchors stay
-    const double sa = wire_coordinate(r.element_a >= 0 ? r.element_a : p.element_a, r.xi), sb = wire_coordinate(r.element_b, r.eta);
+    const double sa = wire_coordinate(p.element_a, r.xi), sb = wire_coordinate(r.element_b, r.eta);
     // Section-fixed directions of the current contact point on both surfaces.
     const auto [element_a, element_b] = elements_of(mesh, static_cast<int>(i));
     const Vec3 direction_a = section_direction(pose(mesh, state, element_a), r.xi, -r.normal);

@@ -66,7 +66,7 @@ class ContactSet final : public Interaction {
   bool commit(const Mesh& mesh, const std::vector<NodeState>& state) override;
 
   // Mesh element pairs that contact may couple (the sparsity pattern): those of points closed or nearly so
-  // (ContactSettings::pattern_margin), the neighbour element toward which a crossing is near, and pairs no longer
+  // (ContactSettings::pattern_margin), for a crossing also the pair it is evaluated on now, and pairs no longer
   // needed until they are a quarter of the needed ones (a change costs an analysis and a factorization).
   const std::vector<std::pair<int, int>>& element_pairs() const override { return element_pairs_; }
   // Lateral pairs: (slave element, master wire) line-contact groups (the paper's "contact pairs").
