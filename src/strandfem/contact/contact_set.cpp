@@ -14,7 +14,7 @@ namespace strandfem {
 namespace {
 
 constexpr double kRangeTolerance = 1e-9;
-constexpr int kMaxCrossingMoves = 4;  // element changes per evaluation of a crossing
+constexpr int kMaxCrossingMoves = 6;  // element changes per evaluation of a crossing
 // Stale element pairs (no point near closing) stay in the pattern until they exceed this share of the needed ones.
 constexpr double kStalePatternFraction = 0.25;
 
@@ -288,16 +288,18 @@ ContactResponse ContactSet::evaluate_point(const Mesh& mesh, const std::vector<N
       if (!found || std::abs(xi) > 1.5 || std::abs(eta) > 1.5) return open;
       if (move == kMaxCrossingMoves) break;
       int step_a = pin_a ? 0 : step(xi, element_a, p.wire_a), step_b = pin_b ? 0 : step(eta, element_b, p.wire_b);
+      // Back to the element just left: their node holds the crossing. One wire is pinned at a time, and the
+      // other wire's steps start afresh: they were taken for a free closest point, and the pinned node may
+      // project inside the element the other wire is on now (else its own node holds it in a later move).
       bool pinned_now = false;
-      if (step_a != 0 && step_a == -last_step_a) {  // back to the element just left: their node holds the crossing
+      if (step_a != 0 && step_a == -last_step_a) {
         pin_a = pinned_now = true;
         xi = step_a;
-        step_a = 0;
-      }
-      if (step_b != 0 && step_b == -last_step_b) {
+        step_a = step_b = last_step_b = 0;
+      } else if (step_b != 0 && step_b == -last_step_b) {
         pin_b = pinned_now = true;
         eta = step_b;
-        step_b = 0;
+        step_a = step_b = last_step_a = 0;
       }
       if (step_a == 0 && step_b == 0 && !pinned_now) break;
       element_a += step_a, xi -= 2.0 * step_a;
