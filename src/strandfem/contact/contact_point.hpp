@@ -40,8 +40,8 @@ struct ContactHistory {
 };
 
 // Fixed data of a contact point plus its committed history. Line points keep xi (their Gauss point) and
-// pick their master element per evaluation among the group's candidates; point contacts keep their
-// element pair and move to a neighbour when a converged crossing leaves the element.
+// pick their master element per evaluation among the group's candidates; point contacts are located at each
+// evaluation around the element pair of their last converged location (ContactSet).
 struct ContactPoint {
   ContactKind kind = ContactKind::kPoint;
   int wire_a = -1, wire_b = -1;    // slave, master

@@ -14,7 +14,8 @@ namespace strandfem {
 namespace {
 
 constexpr double kRangeTolerance = 1e-9;
-constexpr int kMaxCrossingMoves = 6;  // element changes per evaluation of a crossing
+// A crossing this close to an element end (in the element parameter) is located among the neighbouring elements too.
+constexpr double kCrossingEndZone = 0.1;
 // Stale element pairs (no point near closing) stay in the pattern until they exceed this share of the needed ones.
 constexpr double kStalePatternFraction = 0.25;
 
@@ -83,6 +84,66 @@ FootPoint project_onto_wire(const Mesh& mesh, const std::vector<NodeState>& stat
   return best;
 }
 
+
+// Where a crossing lies now: the nearest pair of points of the two wires around the element pair it was last
+// committed on. Away from element ends that is the closest-point solution of that pair. Near an end the nearest of
+// every candidate over the neighbouring elements is taken: closest points inside an element pair, a wire's shared
+// node projected inside the other wire's element, node against node. Where a wire's two elements meet at an angle
+// the nearest point often is the node (the closest point of each element lies past its end, on S32 under bending
+// -1.002 on one and 1.010 on the other). The minimum of distances is continuous as the wires move and does not
+// depend on the path of earlier evaluations: stepping from element to element did, and the same state gave 160 N
+// or 784 N at a crossing depending on the element it started from (docs/theory.md, "Crossings moving to the next
+// element").
+struct CrossingLocation {
+  int element_a = -1, element_b = -1;  // indices within each wire; -1: no nearby pair of points
+  double xi = 0, eta = 0;
+  PinnedParameter pinned = PinnedParameter::kNone;
+  double distance = 1e300;
+};
+
+CrossingLocation locate_crossing(const Mesh& mesh, const std::vector<NodeState>& state, const ContactPoint& p) {
+  const int count_a = element_count(mesh, p.wire_a), count_b = element_count(mesh, p.wire_b);
+  auto line = [&](int wire, int local) { return centerline(mesh, state, mesh.wires[wire].elements[local]); };
+  auto inside = [](double parameter) { return std::abs(parameter) <= 1.0 + kRangeTolerance; };
+  {
+    double xi = p.xi, eta = p.eta;
+    if (closest_points(line(p.wire_a, p.element_a), line(p.wire_b, p.element_b), xi, eta) &&
+        std::abs(xi) <= 1.0 - kCrossingEndZone && std::abs(eta) <= 1.0 - kCrossingEndZone)
+      return {p.element_a, p.element_b, xi, eta, PinnedParameter::kNone, 0.0};
+  }
+  CrossingLocation best;
+  auto consider = [&](int ea, int eb, double xi, double eta, PinnedParameter pinned, const V3<double>& xa, const V3<double>& xb) {
+    const V3<double> d = sub(xa, xb);
+    const double distance = std::sqrt(dot(d, d));
+    if (distance < best.distance) best = {ea, eb, xi, eta, pinned, distance};
+  };
+  const int first_a = std::max(0, p.element_a - 1), last_a = std::min(count_a - 1, p.element_a + 1);
+  const int first_b = std::max(0, p.element_b - 1), last_b = std::min(count_b - 1, p.element_b + 1);
+  for (int ea = first_a; ea <= last_a; ++ea) {
+    const auto a = line(p.wire_a, ea);
+    for (int eb = first_b; eb <= last_b; ++eb) {
+      const auto b = line(p.wire_b, eb);
+      double xi = std::clamp(p.xi - 2.0 * (ea - p.element_a), -1.0, 1.0), eta = std::clamp(p.eta - 2.0 * (eb - p.element_b), -1.0, 1.0);
+      if (closest_points(a, b, xi, eta) && inside(xi) && inside(eta))
+        consider(ea, eb, xi, eta, PinnedParameter::kNone, centerline_point(a, xi), centerline_point(b, eta));
+      // Shared nodes: the end (xi = 1) of every element but a wire's last.
+      if (ea < last_a) {
+        const V3<double> node = centerline_point(a, 1.0);
+        double projected = eta;
+        if (project_point(node, b, projected) && inside(projected))
+          consider(ea, eb, 1.0, projected, PinnedParameter::kSlave, node, centerline_point(b, projected));
+        if (eb < last_b) consider(ea, eb, 1.0, 1.0, PinnedParameter::kBoth, node, centerline_point(b, 1.0));
+      }
+      if (eb < last_b) {
+        const V3<double> node = centerline_point(b, 1.0);
+        double projected = xi;
+        if (project_point(node, a, projected) && inside(projected))
+          consider(ea, eb, projected, 1.0, PinnedParameter::kMaster, centerline_point(a, projected), node);
+      }
+    }
+  }
+  return best;
+}
 }  // namespace
 
 void ContactSet::initialize(const Mesh& mesh, const ContactSettings& settings) {
@@ -261,61 +322,11 @@ ContactResponse ContactSet::evaluate_point(const Mesh& mesh, const std::vector<N
   open.eta = p.eta;
   open.gap = 1e300;
   if (p.kind == ContactKind::kPoint) {
-    // The crossing is evaluated on the element pair that holds it now: a polynomial extrapolated past its
-    // element's end misfits the neighbour, and the penalty turns that misfit into a jump of P when the crossing
-    // moves over (docs/theory.md, "Crossings moving to the next element").
-    // Where a wire's two elements meet at an angle the closest point of each lies past its end (on S32 under
-    // bending, -1.002 on one element and 1.010 on the other, with P 60 N against 735 N): the crossing then sits
-    // on their shared node, that parameter pinned there and the other wire's projected onto it.
-    int element_a = p.element_a, element_b = p.element_b;
-    double xi = p.xi, eta = p.eta;
-    bool pin_a = false, pin_b = false;
-    int last_step_a = 0, last_step_b = 0;
-    ElementPose<double> a, b;
-    // +1 / -1: the parameter lies past the element's end / start and there is a next / previous element.
-    auto step = [&](double parameter, int local, int wire) {
-      if (parameter > 1.0 && local + 1 < element_count(mesh, wire)) return 1;
-      if (parameter < -1.0 && local > 0) return -1;
-      return 0;
-    };
-    for (int move = 0;; ++move) {
-      a = pose(mesh, state, mesh.wires[p.wire_a].elements[element_a]);
-      b = pose(mesh, state, mesh.wires[p.wire_b].elements[element_b]);
-      bool found = true;
-      if (!pin_a && !pin_b) found = closest_points(a.x, b.x, xi, eta);
-      else if (pin_a && !pin_b) found = project_point(centerline_point(a.x, xi), b.x, eta);
-      else if (pin_b && !pin_a) found = project_point(centerline_point(b.x, eta), a.x, xi);
-      if (!found || std::abs(xi) > 1.5 || std::abs(eta) > 1.5) return open;
-      if (move == kMaxCrossingMoves) break;
-      int step_a = pin_a ? 0 : step(xi, element_a, p.wire_a), step_b = pin_b ? 0 : step(eta, element_b, p.wire_b);
-      // Back to the element just left: their node holds the crossing. One wire is pinned at a time, and the
-      // other wire's steps start afresh: they were taken for a free closest point, and the pinned node may
-      // project inside the element the other wire is on now (else its own node holds it in a later move).
-      bool pinned_now = false;
-      if (step_a != 0 && step_a == -last_step_a) {
-        pin_a = pinned_now = true;
-        xi = step_a;
-        step_a = step_b = last_step_b = 0;
-      } else if (step_b != 0 && step_b == -last_step_b) {
-        pin_b = pinned_now = true;
-        eta = step_b;
-        step_a = step_b = last_step_a = 0;
-      }
-      if (step_a == 0 && step_b == 0 && !pinned_now) break;
-      element_a += step_a, xi -= 2.0 * step_a;
-      element_b += step_b, eta -= 2.0 * step_b;
-      if (step_a != 0) last_step_a = step_a;
-      if (step_b != 0) last_step_b = step_b;
-    }
-    const PinnedParameter pinned = pin_a && pin_b ? PinnedParameter::kBoth
-                                   : pin_a        ? PinnedParameter::kSlave
-                                   : pin_b        ? PinnedParameter::kMaster
-                                                  : PinnedParameter::kNone;
-    // Past a wire's end there is no wire to touch.
-    if ((element_a == 0 && xi < -1.0) || (element_a == element_count(mesh, p.wire_a) - 1 && xi > 1.0) ||
-        (element_b == 0 && eta < -1.0) || (element_b == element_count(mesh, p.wire_b) - 1 && eta > 1.0))
-      return open;
-    return evaluate_contact(p, a, b, element_a, element_b, xi, eta, settings_.strand_axis, with_tangent, pinned);
+    const CrossingLocation c = locate_crossing(mesh, state, p);
+    if (c.element_a < 0) return open;
+    return evaluate_contact(p, pose(mesh, state, mesh.wires[p.wire_a].elements[c.element_a]),
+                            pose(mesh, state, mesh.wires[p.wire_b].elements[c.element_b]), c.element_a, c.element_b, c.xi,
+                            c.eta, settings_.strand_axis, with_tangent, c.pinned);
   }
   const LineContactGroup& g = groups_[p.group];
   const auto a = pose(mesh, state, g.slave_element);
@@ -405,14 +416,6 @@ bool ContactSet::commit(const Mesh& mesh, const std::vector<NodeState>& state) {
       h.slip_since_reversal += slip;
       h.slip_direction = direction;
     }
-  }
-  // Crossings that left their element move to the neighbour (parameters re-expressed there).
-  for (ContactPoint& p : points_) {
-    if (p.kind != ContactKind::kPoint) continue;
-    if (p.xi > 1.0 && p.element_a + 1 < element_count(mesh, p.wire_a)) ++p.element_a, p.xi -= 2.0;
-    else if (p.xi < -1.0 && p.element_a > 0) --p.element_a, p.xi += 2.0;
-    if (p.eta > 1.0 && p.element_b + 1 < element_count(mesh, p.wire_b)) ++p.element_b, p.eta -= 2.0;
-    else if (p.eta < -1.0 && p.element_b > 0) --p.element_b, p.eta += 2.0;
   }
   double moved = 0;
   for (std::size_t n = 0; n < state.size(); ++n) moved = std::max(moved, (state[n].position - searched_positions_[n]).norm());

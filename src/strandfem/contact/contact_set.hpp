@@ -59,8 +59,8 @@ class ContactSet final : public Interaction {
   void restore_state(ArchiveReader& in, const Mesh& mesh, const std::vector<NodeState>& state) override;
   int release_tensile();
 
-  // Converged increment at `state`: writes histories (stick points, slip), moves crossings to the
-  // neighbouring element, re-runs the search when nodes moved more than half the margin. Returns true
+  // Converged increment at `state`: writes histories (stick points, slip), keeps each crossing's element pair
+  // (the centre of its next location), re-runs the search when nodes moved more than half the margin. Returns true
   // when element_pairs() changed (the tangent's pattern must be rebuilt): a pair is needed that it lacks, or
   // too many of its pairs are no longer needed.
   bool commit(const Mesh& mesh, const std::vector<NodeState>& state) override;
