@@ -115,6 +115,12 @@ TEST(ContactSettings, FrictionPerMaterialPairAndAxialZone) {
   EXPECT_DOUBLE_EQ(s.friction_at("steel", "aluminum", 50), 0.5);
   EXPECT_DOUBLE_EQ(s.friction_at("steel", "steel", 10), 0.9);
   EXPECT_DOUBLE_EQ(s.friction_at("steel", "aluminum", 20), 0.9);
+  // A zone limited to aluminum contacts (the paper's section 5.2): steel-steel keeps its coefficient there.
+  s.zone_friction = {{0.0, 20.0, 0.7, {{"aluminum", "aluminum"}, {"aluminum", "steel"}}}};
+  EXPECT_DOUBLE_EQ(s.friction_at("steel", "steel", 10), 0.1);
+  EXPECT_DOUBLE_EQ(s.friction_at("steel", "aluminum", 10), 0.7);
+  EXPECT_DOUBLE_EQ(s.friction_at("aluminum", "aluminum", 10), 0.7);
+  EXPECT_DOUBLE_EQ(s.friction_at("aluminum", "aluminum", 30), 0.1);
 }
 
 // Eqs. 2.5-2.6 as documented: point contacts N/mm, line contacts the same divided by d (N/mm^2).

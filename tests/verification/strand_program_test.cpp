@@ -80,6 +80,10 @@ TEST(StrandProgram, BadInputGivesExitCode2NamingTheKey) {
       {"friction_pair_material", "steps:", "contact: {friction_pairs: [{materials: [steel, copper], mu: 0.2}]}\nsteps:",
        "contact.friction_pairs[0].materials[1]"},
       {"friction_zone_order", "steps:", "contact: {friction_zones: [{z: [50, 10], mu: 0.2}]}\nsteps:", "contact.friction_zones[0].z"},
+      {"friction_zone_material", "steps:", "contact: {friction_zones: [{z: [10, 50], mu: 0.2, materials: [[steel, tin]]}]}\nsteps:",
+       "contact.friction_zones[0].materials[0][1]"},
+      {"friction_zone_pairs", "steps:", "contact: {friction_zones: [{z: [10, 50], mu: 0.2, materials: [steel, steel]}]}\nsteps:",
+       "contact.friction_zones[0].materials[0]"},
       {"axis_on_strand", "steps:", "contact: {axis: [1, 0, 0]}\nsteps:", "contact.axis"},
       {"line_points", "steps:", "contact: {line_points: 0}\nsteps:", "contact.line_points"},
   };

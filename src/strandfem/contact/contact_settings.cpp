@@ -36,12 +36,24 @@ void ContactSettings::validate() const {
   if (!(strand_axis.norm() > 0)) throw std::invalid_argument("contact.axis must be a nonzero vector");
 }
 
+namespace {
+bool same_pair(const std::string& a, const std::string& b, const std::string& material_a, const std::string& material_b) {
+  return (a == material_a && b == material_b) || (a == material_b && b == material_a);
+}
+}  // namespace
+
+bool FrictionZone::applies_to(const std::string& material_a, const std::string& material_b) const {
+  if (material_pairs.empty()) return true;
+  for (const auto& [a, b] : material_pairs)
+    if (same_pair(a, b, material_a, material_b)) return true;
+  return false;
+}
+
 double ContactSettings::friction_at(const std::string& material_a, const std::string& material_b, double z) const {
   for (const FrictionZone& zone : zone_friction)
-    if (z >= zone.z_min && z <= zone.z_max) return zone.coefficient;
+    if (z >= zone.z_min && z <= zone.z_max && zone.applies_to(material_a, material_b)) return zone.coefficient;
   for (const MaterialPairFriction& p : pair_friction)
-    if ((p.material_a == material_a && p.material_b == material_b) || (p.material_a == material_b && p.material_b == material_a))
-      return p.coefficient;
+    if (same_pair(p.material_a, p.material_b, material_a, material_b)) return p.coefficient;
   return friction;
 }
 

@@ -2,6 +2,7 @@
 #pragma once
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "strandfem/core/types.hpp"
@@ -19,6 +20,9 @@ struct MaterialPairFriction {
 struct FrictionZone {
   double z_min = 0, z_max = 0;
   double coefficient = 0;
+  // Material pairs the zone applies to (the paper's section 5.2 changes aluminum contacts only); empty: all.
+  std::vector<std::pair<std::string, std::string>> material_pairs;
+  bool applies_to(const std::string& material_a, const std::string& material_b) const;
 };
 
 // What to do with overlaps present in the nominal (reference) geometry.

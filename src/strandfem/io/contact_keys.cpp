@@ -45,10 +45,21 @@ ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Nod
     if (!zones.IsSequence()) reader.fail(zones, "contact.friction_zones", "expected a list of {z: [z_min, z_max], mu}");
     for (std::size_t i = 0; i < zones.size(); ++i) {
       const std::string path = at("contact.friction_zones", i);
-      reader.check_keys(zones[i], path, {"z", "mu"});
+      reader.check_keys(zones[i], path, {"z", "mu", "materials"});
       const auto z = reader.numbers(reader.require(zones[i], path, "z"), path + ".z", 2);
       if (!(z[1] > z[0])) reader.fail(zones[i]["z"], path + ".z", "expected [z_min, z_max] with z_max > z_min (mm)");
-      c.zone_friction.push_back({z[0], z[1], friction(reader.require(zones[i], path, "mu"), path + ".mu")});
+      FrictionZone zone{z[0], z[1], friction(reader.require(zones[i], path, "mu"), path + ".mu"), {}};
+      if (const YAML::Node pairs = zones[i]["materials"]) {
+        const std::string expected = "expected a list of material pairs, e.g. [[aluminum, aluminum], [aluminum, steel]]";
+        if (!pairs.IsSequence() || pairs.size() == 0) reader.fail(pairs, path + ".materials", expected);
+        for (std::size_t k = 0; k < pairs.size(); ++k) {
+          const std::string pair_path = at(path + ".materials", k);
+          if (!pairs[k].IsSequence() || pairs[k].size() != 2) reader.fail(pairs[k], pair_path, expected);
+          zone.material_pairs.emplace_back(material_name(reader, pairs[k][0], pair_path + "[0]", materials),
+                                           material_name(reader, pairs[k][1], pair_path + "[1]", materials));
+        }
+      }
+      c.zone_friction.push_back(zone);
     }
   }
   auto positive = [&](const char* key, double& value, const char* unit) {
