@@ -339,6 +339,28 @@ TEST(ContactForceLaw, SlipForceLiesOnTheFrictionEllipse) {
   EXPECT_NEAR(std::hypot(r.q1 / p.mu1, r.q2 / p.mu2), r.normal_force, 1e-9 * r.normal_force);
 }
 
+// Elastic-slip law with mu2/mu1 = 5: a point reaches the cone at the same elastic slip in either direction, and
+// the stick force along the strand axis is that of mu1 alone (a stick stiffness set by max(mu1, mu2) had made the
+// axial stick five times stiffer, and a wider cone across then gave a larger loop, not a smaller one).
+TEST(ContactForceLaw, OrthotropicElasticSlipReachesTheConeAtTheSameSlipInEveryDirection) {
+  FrictionLaw law;
+  law.mu1 = 0.2;
+  law.mu2 = 1.0;
+  law.allowed_slip = 0.05;
+  const double pressure = 100;
+  const V3<double> normal{1.0, 0.0, 0.0}, along{0.0, 0.0, 1.0}, across{0.0, 1.0, 0.0};  // axis z: direction 1 along z
+  const Vec3 axis = Vec3::UnitZ();
+  for (const auto& [direction, mu] : {std::make_pair(along, law.mu1), std::make_pair(across, law.mu2)}) {
+    const auto half = friction_force(law, normal, scale(0.5 * law.allowed_slip, direction), pressure, axis);
+    EXPECT_FALSE(half.slipping);
+    EXPECT_NEAR(std::sqrt(dot(half.force, half.force)), 0.5 * mu * pressure, 1e-9 * pressure);  // stick: mu P g / s
+    const auto beyond = friction_force(law, normal, scale(1.01 * law.allowed_slip, direction), pressure, axis);
+    EXPECT_TRUE(beyond.slipping);
+    EXPECT_NEAR(std::sqrt(dot(beyond.force, beyond.force)), mu * pressure, 1e-9 * pressure);
+    EXPECT_LT(dot(beyond.force, direction), 0.0);  // opposes the slip
+  }
+}
+
 // Two straight parallel steel wires (d = 2 mm) along z: "master" on the axis, "slave" at x = offset.
 Mesh parallel_lines(int master_elements, int slave_elements, double length, double offset) {
   Mesh mesh;

@@ -17,8 +17,8 @@ enum class FrictionMode { kFree, kHeldStick, kHeldSlip };  // see ContactPoint::
 struct FrictionLaw {
   double mu1 = 0, mu2 = 0;          // along the strand axis projected on the contact plane, and across
   double tangential_stiffness = 0;  // k_t: N/mm (point) or N/mm^2 (line), when allowed_slip is 0
-  // > 0: the elastic-slip law, k_t = max(mu1, mu2) P / allowed_slip with the current P: a point sticks while
-  // its elastic slip |g_T| (in the mu-metric) stays below allowed_slip, whatever the pressure.
+  // > 0: the elastic-slip law, k_t = mu_i P / allowed_slip along direction i with the current P: a point sticks
+  // while its elastic slip |g_T| stays below allowed_slip, whatever the pressure and the direction.
   double allowed_slip = 0;
   FrictionMode mode = FrictionMode::kFree;
   V3<double> slip_direction{0.0, 0.0, 0.0};  // held slip: unit direction of the friction force
@@ -47,12 +47,18 @@ template <class T>
 FrictionForce<T> friction_force(const FrictionLaw& law, const V3<T>& n, const V3<T>& tangential_gap, const T& P,
                                 const Vec3& axis) {
   FrictionForce<T> f;
-  const T stiffness = law.allowed_slip > 0 ? std::max(law.mu1, law.mu2) / law.allowed_slip * P : T(law.tangential_stiffness);
-  f.trial = scale(-stiffness, tangential_gap);
   const V3<T> strand_axis{T(axis[0]), T(axis[1]), T(axis[2])};
   V3<T> d1 = sub(strand_axis, scale(dot(n, strand_axis), n));
   d1 = scale(1.0 / sqrt(dot(d1, d1)), d1);
   const V3<T> d2 = cross(d1, n);
+  if (law.allowed_slip > 0) {
+    // k_i = mu_i P / allowed_slip in each direction: the cone is reached at the same elastic slip whatever the
+    // direction, and mu2/mu1 changes the friction across without stiffening the stick along the axis.
+    const T per_slip = P / law.allowed_slip;
+    f.trial = add(scale(-law.mu1 * per_slip * dot(tangential_gap, d1), d1), scale(-law.mu2 * per_slip * dot(tangential_gap, d2), d2));
+  } else {
+    f.trial = scale(-T(law.tangential_stiffness), tangential_gap);
+  }
   auto measure2 = [&](const T& c1, const T& c2) { return (c1 / law.mu1) * (c1 / law.mu1) + (c2 / law.mu2) * (c2 / law.mu2); };
   const T trial1 = dot(f.trial, d1), trial2 = dot(f.trial, d2);
   const T trial_measure2 = measure2(trial1, trial2);
