@@ -564,6 +564,50 @@ TEST(ContactSet, CrossingNearTwoKinksIsTheNearestPairOfPointsWhateverItsHistory)
     }
 }
 
+// A crossing that slides past a wire's end leaves the wire: it opens, even while held active within an increment
+// (on S32 under bending such a crossing near a clamp was placed 2.3 mm away on the wire's far node and, active,
+// pulled with 1.5e7 N). And an active point whose wires have separated by more than a wobble opens.
+TEST(ContactSet, CrossingPastAWiresEndOpens) {
+  const double offset = -1.95;  // wires of radius 1 pressed 0.05 mm together
+  Mesh mesh;
+  mesh.sections.push_back(std::make_unique<ElasticSection>(SectionGeometry::circle(2.0, 0.3), Material{200000, 0.3, 0, "steel"}));
+  mesh.add_line("along", 1, 0, 0, 2, [](double t) { return std::make_pair(Vec3(0, 0, 20.0 * t), Mat3::Identity()); });
+  mesh.add_line("across", 2, 0, 0, 2, [&](double t) { return std::make_pair(Vec3(offset, 20.0 * t - 10.0, 1.0), Mat3::Identity()); });
+  ContactSettings settings = enabled_contact();
+  settings.initial_overlap = InitialOverlap::kKeep;
+  ContactSet contacts;
+  contacts.initialize(mesh, settings);
+  ASSERT_EQ(contacts.radial_point_count(), 1);
+  const std::size_t crossing = std::find_if(contacts.points().begin(), contacts.points().end(),
+                                            [](const ContactPoint& p) { return p.kind == ContactKind::kPoint; }) - contacts.points().begin();
+  std::vector<NodeState> state = reference_state(mesh);
+  auto place = [&](double z, double x) {
+    for (std::size_t n = 0; n < state.size(); ++n)
+      if (mesh.nodes[n].wire == 1) state[n].position = Vec3(x, mesh.nodes[n].reference.position.y(), z);
+  };
+  contacts.commit(mesh, state);
+  contacts.begin_increment();
+  contacts.evaluate(mesh, state, false);
+  contacts.accept_iterate(mesh);  // the crossing is active
+  ASSERT_EQ(contacts.responses()[crossing].status, ContactStatus::kStick);
+  EXPECT_NEAR(contacts.responses()[crossing].gap, -0.05, 1e-9);
+  place(0.5, offset);  // still on the wire, near its first node
+  contacts.evaluate(mesh, state, false);
+  EXPECT_NE(contacts.responses()[crossing].status, ContactStatus::kOpen);
+  EXPECT_NEAR(contacts.responses()[crossing].gap, -0.05, 1e-9);
+  place(-0.5, offset);  // past the wire's first node
+  contacts.evaluate(mesh, state, false);
+  EXPECT_EQ(contacts.responses()[crossing].status, ContactStatus::kOpen);
+  EXPECT_EQ(contacts.responses()[crossing].force.norm(), 0.0);
+  place(1.0, offset - 0.5);  // back on the wire, 0.45 mm apart: separated, not an iterate's wobble
+  contacts.evaluate(mesh, state, false);
+  EXPECT_EQ(contacts.responses()[crossing].status, ContactStatus::kOpen);
+  place(1.0, offset - 0.06);  // 0.01 mm apart: an active point holds on (tension, released at convergence)
+  contacts.evaluate(mesh, state, false);
+  EXPECT_EQ(contacts.responses()[crossing].status, ContactStatus::kStick);
+  EXPECT_LT(contacts.responses()[crossing].normal_force, 0.0);
+}
+
 TEST(ContactSet, InitialOverlapIsOffset) {
   const Mesh mesh = parallel_lines(2, 2, 20, 1.9);
   ContactSet contacts;

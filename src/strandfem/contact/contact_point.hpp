@@ -17,6 +17,7 @@ enum class ContactKind { kLine, kPoint };
 using ContactVector = PairVector;
 using ContactMatrix = PairMatrix;
 constexpr double kContactActivation = 1e-9;  // closed when gap <= this x (r_a + r_b)
+constexpr double kActiveSeparationLimit = 0.05;  // an active point beyond this gap x (r_a + r_b) opens at once
 const char* to_string(ContactKind kind);
 const char* to_string(ContactStatus status);
 
@@ -152,7 +153,10 @@ ContactForces<T> contact_forces(const ContactPoint& point, const ElementPose<T>&
   // Newton iteration then sees the contact stiffness instead of letting wires fly through each other.
   const double smoothing = point.stiffness.smoothing;
   const double activation = std::max(kContactActivation * (point.radius_a + point.radius_b), smoothing);
-  if (!point.active && value_of(out.gap) > activation) return out;
+  // An active point holds its force in tension only across an iterate's wobble: wires apart by a tenth of their
+  // radii have separated (or the crossing has left its wires), and -k_n g there would be mega-newtons.
+  const bool held_closed = point.active && value_of(out.gap) < kActiveSeparationLimit * (point.radius_a + point.radius_b);
+  if (!held_closed && value_of(out.gap) > activation) return out;
   const V3<T>& n = out.normal;
   out.status = ContactStatus::kStick;
   out.normal_force = normal_force(point.stiffness.normal, smoothing, out.gap);

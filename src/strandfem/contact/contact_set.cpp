@@ -112,10 +112,18 @@ CrossingLocation locate_crossing(const Mesh& mesh, const std::vector<NodeState>&
       return {p.element_a, p.element_b, xi, eta, PinnedParameter::kNone, 0.0};
   }
   CrossingLocation best;
-  auto consider = [&](int ea, int eb, double xi, double eta, PinnedParameter pinned, const V3<double>& xa, const V3<double>& xb) {
+  bool beyond_wire_end = false;  // the nearest pair of points lies past a wire's first or last node
+  auto consider = [&](int ea, int eb, double xi, double eta, PinnedParameter pinned, const V3<double>& xa, const V3<double>& xb,
+                      bool past_end = false) {
     const V3<double> d = sub(xa, xb);
     const double distance = std::sqrt(dot(d, d));
-    if (distance < best.distance) best = {ea, eb, xi, eta, pinned, distance};
+    if (distance < best.distance) {
+      best = {ea, eb, xi, eta, pinned, distance};
+      beyond_wire_end = past_end;
+    }
+  };
+  auto past_wire_end = [&](int local, double parameter, int count) {
+    return (local == 0 && parameter < -1.0 - kRangeTolerance) || (local == count - 1 && parameter > 1.0 + kRangeTolerance);
   };
   const int first_a = std::max(0, p.element_a - 1), last_a = std::min(count_a - 1, p.element_a + 1);
   const int first_b = std::max(0, p.element_b - 1), last_b = std::min(count_b - 1, p.element_b + 1);
@@ -124,8 +132,12 @@ CrossingLocation locate_crossing(const Mesh& mesh, const std::vector<NodeState>&
     for (int eb = first_b; eb <= last_b; ++eb) {
       const auto b = line(p.wire_b, eb);
       double xi = std::clamp(p.xi - 2.0 * (ea - p.element_a), -1.0, 1.0), eta = std::clamp(p.eta - 2.0 * (eb - p.element_b), -1.0, 1.0);
-      if (closest_points(a, b, xi, eta) && inside(xi) && inside(eta))
-        consider(ea, eb, xi, eta, PinnedParameter::kNone, centerline_point(a, xi), centerline_point(b, eta));
+      if (closest_points(a, b, xi, eta)) {
+        const bool past_end = past_wire_end(ea, xi, count_a) || past_wire_end(eb, eta, count_b);
+        // Past a wire's end there is no wire to touch: the crossing is open there if that is where it lies.
+        if ((inside(xi) && inside(eta)) || (past_end && std::abs(xi) < 1.5 && std::abs(eta) < 1.5))
+          consider(ea, eb, xi, eta, PinnedParameter::kNone, centerline_point(a, xi), centerline_point(b, eta), past_end);
+      }
       // Shared nodes: the end (xi = 1) of every element but a wire's last.
       if (ea < last_a) {
         const V3<double> node = centerline_point(a, 1.0);
@@ -142,6 +154,7 @@ CrossingLocation locate_crossing(const Mesh& mesh, const std::vector<NodeState>&
       }
     }
   }
+  if (beyond_wire_end) return CrossingLocation{};
   return best;
 }
 }  // namespace
