@@ -138,7 +138,7 @@ CrossingLocation locate_crossing(const Mesh& mesh, const std::vector<NodeState>&
         if ((inside(xi) && inside(eta)) || (past_end && std::abs(xi) < 1.5 && std::abs(eta) < 1.5))
           consider(ea, eb, xi, eta, PinnedParameter::kNone, centerline_point(a, xi), centerline_point(b, eta), past_end);
       }
-      // Shared nodes: the end (xi = 1) of every element but a wire's last.
+      // Shared nodes: the end (parameter 1) of each element of the neighbourhood but its last.
       if (ea < last_a) {
         const V3<double> node = centerline_point(a, 1.0);
         double projected = eta;
@@ -157,6 +157,7 @@ CrossingLocation locate_crossing(const Mesh& mesh, const std::vector<NodeState>&
   if (beyond_wire_end) return CrossingLocation{};
   return best;
 }
+
 }  // namespace
 
 void ContactSet::initialize(const Mesh& mesh, const ContactSettings& settings) {
