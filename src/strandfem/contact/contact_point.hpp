@@ -153,8 +153,8 @@ ContactForces<T> contact_forces(const ContactPoint& point, const ElementPose<T>&
   // Newton iteration then sees the contact stiffness instead of letting wires fly through each other.
   const double smoothing = point.stiffness.smoothing;
   const double activation = std::max(kContactActivation * (point.radius_a + point.radius_b), smoothing);
-  // An active point holds its force in tension only across an iterate's wobble: wires apart by a tenth of their
-  // radii have separated (or the crossing has left its wires), and -k_n g there would be mega-newtons.
+  // An active point holds its force in tension only across an iterate's wobble: wires apart by a tenth of their mean
+  // radius have separated (or the crossing has left its wires), and -k_n g there would be mega-newtons.
   const bool held_closed = point.active && value_of(out.gap) < kActiveSeparationLimit * (point.radius_a + point.radius_b);
   if (!held_closed && value_of(out.gap) > activation) return out;
   const V3<T>& n = out.normal;

@@ -84,7 +84,6 @@ FootPoint project_onto_wire(const Mesh& mesh, const std::vector<NodeState>& stat
   return best;
 }
 
-
 // Where a crossing lies now: the nearest pair of points of the two wires around the element pair it was last
 // committed on. Away from element ends that is the closest-point solution of that pair. Near an end the nearest of
 // every candidate over the neighbouring elements is taken: closest points inside an element pair, a wire's shared
@@ -92,8 +91,8 @@ FootPoint project_onto_wire(const Mesh& mesh, const std::vector<NodeState>& stat
 // the nearest point often is the node (the closest point of each element lies past its end, on S32 under bending
 // -1.002 on one and 1.010 on the other). The minimum of distances is continuous as the wires move and does not
 // depend on the path of earlier evaluations: stepping from element to element did, and the same state gave 160 N
-// or 784 N at a crossing depending on the element it started from (docs/theory.md, "Crossings moving to the next
-// element").
+// or 784 N at a crossing depending on the element it started from (docs/theory.md, "Locating a crossing as the
+// nearest pair of points").
 struct CrossingLocation {
   int element_a = -1, element_b = -1;  // indices within each wire; -1: no nearby pair of points
   double xi = 0, eta = 0;
