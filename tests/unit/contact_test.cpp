@@ -472,17 +472,30 @@ TEST(ContactSet, PatternKeepsAFewStalePairsUntilTheyAreAQuarterOfIt) {
   for (const auto& [a, b] : contacts.element_pairs()) EXPECT_TRUE(std::count(all.begin(), all.end(), std::make_pair(a, b)));
 }
 
+// A steel wire (d = 2 mm, layer 1) from z = 0 to 20 in two straight elements meeting at (0, 0, 10): a V in the x-z
+// plane with arms of the given slope (0: straight), to which a test adds the wire that crosses it.
+Mesh v_wire_mesh(double slope) {
+  Mesh mesh;
+  mesh.sections.push_back(std::make_unique<ElasticSection>(SectionGeometry::circle(2.0, 0.3), Material{200000, 0.3, 0, "steel"}));
+  mesh.add_line("kinked", 1, 0, 0, 2, [slope](double t) {
+    return std::make_pair(Vec3(slope * std::abs(t - 0.5) * 20.0, 0, 20.0 * t), Mat3::Identity());
+  });
+  return mesh;
+}
+
+// Index of the (single) crossing among a contact set's points.
+std::size_t crossing_index(const ContactSet& contacts) {
+  const auto& points = contacts.points();
+  return std::find_if(points.begin(), points.end(), [](const ContactPoint& p) { return p.kind == ContactKind::kPoint; }) - points.begin();
+}
+
 // A wire slides across a node where the other wire's two straight elements meet at an angle (a V). Near the node
 // the closest point of each element lies past its end; the crossing is then held at the node, so the gap is the
 // true distance between the wires all along, without the jump an element's extrapolation beyond its end gave
-// when the crossing moved over (docs/theory.md, "Crossings moving to the next element").
+// when the crossing moved over (docs/theory.md, "Locating a crossing as the nearest pair of points").
 TEST(ContactSet, CrossingSlidesOverAKinkWithAContinuousGap) {
-  const double length = 20, slope = 0.2, offset = -2.05;  // V apex at (0, 0, 10); the other wire along y at x = offset
-  Mesh mesh;
-  mesh.sections.push_back(std::make_unique<ElasticSection>(SectionGeometry::circle(2.0, 0.3), Material{200000, 0.3, 0, "steel"}));
-  mesh.add_line("kinked", 1, 0, 0, 2, [&](double t) {
-    return std::make_pair(Vec3(slope * std::abs(t - 0.5) * length, 0, t * length), Mat3::Identity());
-  });
+  const double slope = 0.2, offset = -2.05;  // V apex at (0, 0, 10); the other wire along y at x = offset
+  Mesh mesh = v_wire_mesh(slope);
   auto across_at = [&](double z) {
     return [z, offset](double t) { return std::make_pair(Vec3(offset, 20.0 * t - 10.0, z), Mat3::Identity()); };
   };
@@ -504,10 +517,7 @@ TEST(ContactSet, CrossingSlidesOverAKinkWithAContinuousGap) {
     for (std::size_t n = 0; n < state.size(); ++n)
       if (mesh.nodes[n].wire == 1) state[n].position.z() = z;
     contacts.evaluate(mesh, state, false);
-    const auto it = std::find_if(contacts.points().begin(), contacts.points().end(),
-                                 [](const ContactPoint& p) { return p.kind == ContactKind::kPoint; });
-    const ContactResponse& r = contacts.responses()[it - contacts.points().begin()];
-    EXPECT_NEAR(r.gap, true_gap(z), 1e-9) << "z = " << z;
+    EXPECT_NEAR(contacts.responses()[crossing_index(contacts)].gap, true_gap(z), 1e-9) << "z = " << z;
   }
 }
 
@@ -533,11 +543,7 @@ TEST(ContactSet, CrossingNearTwoKinksIsTheNearestPairOfPointsWhateverItsHistory)
   };
   for (double bend : {-0.02, 0.0, 0.02})
     for (double node_y : {-0.04, -0.01, 0.01, 0.04}) {
-      Mesh mesh;
-      mesh.sections.push_back(std::make_unique<ElasticSection>(SectionGeometry::circle(2.0, 0.3), Material{200000, 0.3, 0, "steel"}));
-      mesh.add_line("kinked", 1, 0, 0, 2, [&](double t) {
-        return std::make_pair(Vec3(slope * std::abs(t - 0.5) * 20.0, 0, 20.0 * t), Mat3::Identity());
-      });
+      Mesh mesh = v_wire_mesh(slope);
       auto across = [&](double y) { return Vec3(offset - bend * std::abs(y - node_y), y, 9.0 + incline * y); };
       mesh.add_line("across", 2, 0, 0, 2, [&](double t) { return std::make_pair(across(20.0 * t - 10.0 + node_y), Mat3::Identity()); });
       ContactSet contacts;
@@ -555,10 +561,7 @@ TEST(ContactSet, CrossingNearTwoKinksIsTheNearestPairOfPointsWhateverItsHistory)
         for (std::size_t n = 0; n < state.size(); ++n)
           if (mesh.nodes[n].wire == 1) state[n].position = mesh.nodes[n].reference.position + shift;
         contacts.evaluate(mesh, state, false);
-        const auto it = std::find_if(contacts.points().begin(), contacts.points().end(),
-                                     [](const ContactPoint& p) { return p.kind == ContactKind::kPoint; });
-        const ContactResponse& r = contacts.responses()[it - contacts.points().begin()];
-        EXPECT_NEAR(r.gap, true_gap, 1e-8) << "bend " << bend << ", node at y = " << node_y << ", z0 = " << z0;
+        EXPECT_NEAR(contacts.responses()[crossing_index(contacts)].gap, true_gap, 1e-8) << "bend " << bend << ", node at y = " << node_y << ", z0 = " << z0;
         contacts.commit(mesh, state);
       }
     }
@@ -569,17 +572,14 @@ TEST(ContactSet, CrossingNearTwoKinksIsTheNearestPairOfPointsWhateverItsHistory)
 // pulled with 1.5e7 N). And an active point whose wires have separated by more than a wobble opens.
 TEST(ContactSet, CrossingPastAWiresEndOpens) {
   const double offset = -1.95;  // wires of radius 1 pressed 0.05 mm together
-  Mesh mesh;
-  mesh.sections.push_back(std::make_unique<ElasticSection>(SectionGeometry::circle(2.0, 0.3), Material{200000, 0.3, 0, "steel"}));
-  mesh.add_line("along", 1, 0, 0, 2, [](double t) { return std::make_pair(Vec3(0, 0, 20.0 * t), Mat3::Identity()); });
+  Mesh mesh = v_wire_mesh(0.0);  // straight, along z
   mesh.add_line("across", 2, 0, 0, 2, [&](double t) { return std::make_pair(Vec3(offset, 20.0 * t - 10.0, 1.0), Mat3::Identity()); });
   ContactSettings settings = enabled_contact();
   settings.initial_overlap = InitialOverlap::kKeep;
   ContactSet contacts;
   contacts.initialize(mesh, settings);
   ASSERT_EQ(contacts.radial_point_count(), 1);
-  const std::size_t crossing = std::find_if(contacts.points().begin(), contacts.points().end(),
-                                            [](const ContactPoint& p) { return p.kind == ContactKind::kPoint; }) - contacts.points().begin();
+  const std::size_t crossing = crossing_index(contacts);
   std::vector<NodeState> state = reference_state(mesh);
   auto place = [&](double z, double x) {
     for (std::size_t n = 0; n < state.size(); ++n)

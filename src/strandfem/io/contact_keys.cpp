@@ -1,5 +1,8 @@
 #include "strandfem/io/contact_keys.hpp"
 
+#include <tuple>
+#include <utility>
+
 namespace strandfem {
 
 namespace {
@@ -10,6 +13,12 @@ std::string material_name(const YamlReader& reader, const YAML::Node& node, cons
   const std::string name = reader.text(node, path);
   if (!materials.count(name)) reader.fail(node, path, "unknown material '" + name + "' (define it under 'materials')");
   return name;
+}
+// Two material names [a, b] at `node`.
+std::pair<std::string, std::string> material_pair(const YamlReader& reader, const YAML::Node& node, const std::string& path,
+                                                  const std::map<std::string, Material>& materials, const std::string& expected) {
+  if (!node.IsSequence() || node.size() != 2) reader.fail(node, path, expected);
+  return {material_name(reader, node[0], path + "[0]", materials), material_name(reader, node[1], path + "[1]", materials)};
 }
 }  // namespace
 
@@ -32,11 +41,9 @@ ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Nod
     for (std::size_t i = 0; i < pairs.size(); ++i) {
       const std::string path = at("contact.friction_pairs", i);
       reader.check_keys(pairs[i], path, {"materials", "mu"});
-      const YAML::Node m = reader.require(pairs[i], path, "materials");
-      if (!m.IsSequence() || m.size() != 2) reader.fail(m, path + ".materials", "expected two material names");
       MaterialPairFriction f;
-      f.material_a = material_name(reader, m[0], path + ".materials[0]", materials);
-      f.material_b = material_name(reader, m[1], path + ".materials[1]", materials);
+      std::tie(f.material_a, f.material_b) =
+          material_pair(reader, reader.require(pairs[i], path, "materials"), path + ".materials", materials, "expected two material names");
       f.coefficient = friction(reader.require(pairs[i], path, "mu"), path + ".mu");
       c.pair_friction.push_back(f);
     }
@@ -52,12 +59,8 @@ ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Nod
       if (const YAML::Node pairs = zones[i]["materials"]) {
         const std::string expected = "expected a list of material pairs, e.g. [[aluminum, aluminum], [aluminum, steel]]";
         if (!pairs.IsSequence() || pairs.size() == 0) reader.fail(pairs, path + ".materials", expected);
-        for (std::size_t k = 0; k < pairs.size(); ++k) {
-          const std::string pair_path = at(path + ".materials", k);
-          if (!pairs[k].IsSequence() || pairs[k].size() != 2) reader.fail(pairs[k], pair_path, expected);
-          zone.material_pairs.emplace_back(material_name(reader, pairs[k][0], pair_path + "[0]", materials),
-                                           material_name(reader, pairs[k][1], pair_path + "[1]", materials));
-        }
+        for (std::size_t k = 0; k < pairs.size(); ++k)
+          zone.material_pairs.push_back(material_pair(reader, pairs[k], at(path + ".materials", k), materials, expected));
       }
       c.zone_friction.push_back(zone);
     }
