@@ -248,6 +248,13 @@ TEST(ContactTangent, ElasticSlipLaw) {
   ASSERT_GT(slip.tangential_gap.norm(), p.allowed_slip);
   EXPECT_NEAR(slip.friction.norm(), p.mu1 * slip.normal_force, 1e-9 * slip.normal_force);
   EXPECT_LT(tangent_error(p, f, Vec3::UnitX(), ContactStatus::kSlip), 1e-6);
+  // Orthotropic (mu2/mu1 = 5, stick stiffness mu_i P / slip per direction), along an oblique axis.
+  const Vec3 axis = Vec3(1.0, 0.3, 0.2).normalized();
+  p.mu2 = 5.0 * p.mu1;
+  set_stick(p, f, 0.005, 0.002);
+  EXPECT_LT(tangent_error(p, f, axis, ContactStatus::kStick), 1e-6);
+  set_stick(p, f, 0.2, 0.1);
+  EXPECT_LT(tangent_error(p, f, axis, ContactStatus::kSlip), 1e-6);
 }
 
 TEST(ContactTangent, LineContactStickSlipOrthotropic) {
