@@ -90,7 +90,7 @@ solver: {force_tolerance: 1.0e-8, moment_tolerance: 1.0e-8}
     for (std::size_t i = 0; i < model_state.contacts.points().size(); ++i) {
       const bool is_closed = model_state.contacts.responses()[i].status != ContactStatus::kOpen;
       closed += is_closed;
-      frictional += is_closed && model_state.contacts.points()[i].history.closed && model_state.contacts.points()[i].mu1 > 0;
+      frictional += is_closed && model_state.contacts.points()[i].history.anchored && model_state.contacts.points()[i].mu1 > 0;
     }
     EXPECT_GT(closed, 0) << "the check must run with closed contacts";
     if (c.model.contact_settings.friction > 0) EXPECT_GT(frictional, 0) << "and with surface friction (stick anchors set)";

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <tuple>
 
 namespace strandfem {
 namespace {
@@ -41,12 +42,15 @@ TEST(TensionedBeam, EquivalentStiffnessInvertsEq31) {
 TEST(Hysteresis, ParallelogramLoopAreaStiffnessAndSteadiness) {
   // Two identical cycles from (0, 0):
   // out (0,0) -> (1,10) -> (3,12); back (3,12) -> (2,2) -> (0,0). Its area: triangles (0,0),(1,10),(3,12) and (0,0),(3,12),(2,2), 9 each.
-  std::vector<LoadDeflectionPoint> history = {{0, false, 0, 0, 500}};  // end of the tension ramp
+  // Friction dissipates 0.5 N mm during the tension ramp, then 7 N mm in the first cycle and 5 in the second.
+  std::vector<LoadDeflectionPoint> history = {{0, false, 0, 0, 500, 0.5}};  // end of the tension ramp
+  double dissipated = 0.5;
   for (int cycle = 1; cycle <= 2; ++cycle) {
-    history.push_back({cycle, false, 10, 1, 500});
-    history.push_back({cycle, false, 12, 3, 510});
-    history.push_back({cycle, true, 2, 2, 505});
-    history.push_back({cycle, true, 0, 0, 500});
+    const double per_increment = cycle == 1 ? 1.75 : 1.25;
+    for (const auto& [returning, load, deflection, tension] :
+         {std::make_tuple(false, 10.0, 1.0, 500.0), std::make_tuple(false, 12.0, 3.0, 510.0), std::make_tuple(true, 2.0, 2.0, 505.0),
+          std::make_tuple(true, 0.0, 0.0, 500.0)})
+      history.push_back({cycle, returning, load, deflection, tension, dissipated += per_increment});
   }
   const auto loops = hysteresis_loops(history);
   ASSERT_EQ(loops.size(), 2u);
@@ -59,6 +63,8 @@ TEST(Hysteresis, ParallelogramLoopAreaStiffnessAndSteadiness) {
     EXPECT_DOUBLE_EQ(loop.loading_tangent, 10);
     EXPECT_DOUBLE_EQ(loop.unloading_tangent, 10);
   }
+  EXPECT_NEAR(loops[0].friction_dissipation, 7.0, 1e-12);
+  EXPECT_NEAR(loops[1].friction_dissipation, 5.0, 1e-12);
   EXPECT_TRUE(loop_is_steady(loops[0], loops[1], 0.01));
   HysteresisLoop larger = loops[1];
   larger.area *= 1.1;

@@ -97,6 +97,7 @@ void set_stick(ContactPoint& p, const PairFixture& f, double offset, double turn
                PinnedParameter pinned = PinnedParameter::kNone) {
   const ContactResponse r = response_at(p, f, false, Vec3::UnitX(), pinned);
   p.history.closed = true;
+  p.history.anchored = true;
   p.history.stick_a = wire_coordinate(0, r.xi + offset);
   p.history.stick_b = wire_coordinate(0, r.eta - 0.7 * offset);
   const Eigen::AngleAxisd about_axis(turn, Vec3::UnitX());
@@ -613,6 +614,44 @@ TEST(ContactSet, CrossingPastAWiresEndOpens) {
   contacts.evaluate(mesh, state, false);
   EXPECT_EQ(contacts.responses()[crossing].status, ContactStatus::kStick);
   EXPECT_LT(contacts.responses()[crossing].normal_force, 0.0);
+}
+
+// Friction acts from the increment in which a point closes, held from where the surfaces faced each other at the
+// last converged state: a crossing 0.05 mm open is pressed 0.05 mm together and slid 0.2 mm along the straight wire
+// in one increment (well past the elastic slip). It slides at the Coulomb limit |Q| = mu P, against the slide.
+// Before, a point open at the last converged state was frictionless for its whole first closed increment.
+TEST(ContactSet, FrictionHoldsAPointFromTheIncrementItClosesIn) {
+  Mesh mesh = v_wire_mesh(0.0);  // straight, along z
+  mesh.add_line("across", 2, 0, 0, 2, [](double t) { return std::make_pair(Vec3(-2.05, 20.0 * t - 10.0, 5.0), Mat3::Identity()); });
+  ContactSettings settings = enabled_contact();
+  settings.friction = 0.3;
+  ContactSet contacts;
+  contacts.initialize(mesh, settings);
+  ASSERT_EQ(contacts.radial_point_count(), 1);
+  const std::size_t crossing = crossing_index(contacts);
+  std::vector<NodeState> state = reference_state(mesh);
+  contacts.commit(mesh, state);
+  ASSERT_EQ(contacts.responses()[crossing].status, ContactStatus::kOpen);
+  contacts.begin_increment();
+  for (std::size_t n = 0; n < state.size(); ++n)
+    if (mesh.nodes[n].wire == 1) state[n].position += Vec3(0.1, 0.0, 0.2);
+  contacts.evaluate(mesh, state, false);
+  const ContactResponse& r = contacts.responses()[crossing];
+  ASSERT_NE(r.status, ContactStatus::kOpen);
+  EXPECT_NEAR(r.gap, -0.05, 1e-9);
+  EXPECT_EQ(r.status, ContactStatus::kSlip);
+  EXPECT_NEAR(r.friction.norm(), 0.3 * r.normal_force, 1e-9 * r.normal_force);
+  // Along the slide (z) and against it: the across wire moved +z relative to the straight one.
+  const double across_is_slave = contacts.points()[crossing].wire_a == 1 ? 1.0 : -1.0;
+  EXPECT_NEAR(across_is_slave * r.friction.z(), -0.3 * r.normal_force, 1e-9 * r.normal_force);
+  // Committed: the slide past the elastic slip is the point's slip, and friction's work over it mu P slip.
+  const double normal_force = r.normal_force;
+  contacts.commit(mesh, state);
+  const ContactPoint& p = contacts.points()[crossing];
+  ASSERT_GT(p.allowed_slip, 0.0);
+  EXPECT_NEAR(p.history.slip, 0.2 - p.allowed_slip, 1e-9);
+  EXPECT_NEAR(p.history.dissipated_energy, 0.3 * normal_force * (0.2 - p.allowed_slip), 1e-9 * normal_force);
+  EXPECT_DOUBLE_EQ(contacts.dissipated_energy(), p.history.dissipated_energy);
 }
 
 TEST(ContactSet, InitialOverlapIsOffset) {

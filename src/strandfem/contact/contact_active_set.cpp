@@ -37,7 +37,7 @@ void ContactSet::activate_closed() {
       if (p.normal_switches > 0) ++p.normal_switches;  // closed again after a release
       p.active = true;
     }
-    if (p.friction_mode != FrictionMode::kFree || !p.history.closed || !(p.mu1 > 0) || !(r.normal_force > 0) ||
+    if (p.friction_mode != FrictionMode::kFree || !p.history.anchored || !(p.mu1 > 0) || !(r.normal_force > 0) ||
         p.friction_switches >= kMaxFrictionSwitches)
       continue;
     if (r.status == ContactStatus::kSlip && r.friction.norm() > 0) {

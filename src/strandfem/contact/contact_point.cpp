@@ -109,7 +109,7 @@ ContactResponse evaluate_contact(const ContactPoint& point, const ElementPose<do
     for (int c = 0; c < 3; ++c) r.force[3 * i + c] = f.nodal[i][c];
   if (!with_tangent) return r;
   // Rotations enter only through friction (surface stick points, moment arms): without it, translations suffice.
-  if (point.history.closed && point.mu1 > 0) {
+  if (point.history.anchored && point.mu1 > 0) {
     const auto poses = lift_poses<36>(a, b);
     fill_tangent<36>(contact_forces(point, poses[0], poses[1], xi, eta, anchor, axis, pinned), r.tangent);
   } else {

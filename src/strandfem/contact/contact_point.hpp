@@ -35,7 +35,9 @@ struct ContactHistory {
   Vec3 stick_direction_a = Vec3::Zero(), stick_direction_b = Vec3::Zero();
   double slip = 0;                 // accumulated slip, mm
   double slip_since_reversal = 0;  // slip since the slip direction last reversed, mm
+  double dissipated_energy = 0;    // work of friction over the slip, N mm (a line point: over its weight's length)
   Vec3 slip_direction = Vec3::Zero();
+  bool anchored = false;           // stick points set (also while open: where the wires face each other)
   bool slipping = false;           // slipping at the last converged state (friction along -slip_direction):
                                    // the next increment starts by holding that slip
 };
@@ -161,7 +163,7 @@ ContactForces<T> contact_forces(const ContactPoint& point, const ElementPose<T>&
   out.status = ContactStatus::kStick;
   out.normal_force = normal_force(point.stiffness.normal, smoothing, out.gap);
   V3<T> total = scale(out.normal_force, n);
-  const bool frictional = point.history.closed && point.mu1 > 0;
+  const bool frictional = point.history.anchored && point.mu1 > 0;
   if (frictional) {
     // Tangential gap: the separation of the two surface stick points, projected on the contact plane.
     const V3<T> separation = sub(surface_point(a, anchor.xi, point.radius_a, anchor.direction_a),

@@ -379,62 +379,83 @@ std::array<int, 6> ContactSet::nodes_of(const Mesh& mesh, int index) const {
   return {na[0], na[1], na[2], nb[0], nb[1], nb[2]};
 }
 
+void ContactSet::commit_point(const Mesh& mesh, const std::vector<NodeState>& state, std::size_t i) {
+  ContactPoint& p = points_[i];
+  const ContactResponse& r = responses_[i];
+  ContactHistory& h = p.history;
+  // Converged parameters (also of open crossings, so that they follow the wires and move on below).
+  if (r.element_b >= 0) {
+    p.xi = r.xi;
+    p.eta = r.eta;
+    if (r.element_a >= 0) p.element_a = r.element_a;
+    p.element_b = r.element_b;
+  }
+  h.slipping = r.status == ContactStatus::kSlip && r.tangential_gap.norm() > 0;
+  const bool open = r.status == ContactStatus::kOpen || r.normal_force < 0;
+  if (open) {
+    // An opened contact has no stick state; the slip it accumulated stays on record.
+    h.closed = false;
+    h.slipping = false;
+    h.slip_since_reversal = 0;
+    h.slip_direction.setZero();
+  } else if (h.closed && r.status != ContactStatus::kSlip) {
+    return;  // sticking: the anchors stay
+  }
+  if (r.element_b < 0) {
+    h.anchored = false;
+    return;
+  }
+  const double sa = wire_coordinate(p.element_a, r.xi), sb = wire_coordinate(r.element_b, r.eta);
+  // Section-fixed directions of the current contact point on both surfaces.
+  const auto [element_a, element_b] = elements_of(mesh, static_cast<int>(i));
+  const Vec3 direction_a = section_direction(pose(mesh, state, element_a), r.xi, -r.normal);
+  const Vec3 direction_b = section_direction(pose(mesh, state, element_b), r.eta, r.normal);
+  if (open || !h.anchored) {
+    // An open point keeps its stick points where the two surfaces face each other now: if it closes within
+    // the next increment, friction holds it from there at once (not one increment late).
+    h.anchored = true;
+    h.closed = !open;
+    h.stick_a = sa;
+    h.stick_b = sb;
+    h.stick_direction_a = direction_a;
+    h.stick_direction_b = direction_b;
+    return;
+  }
+  h.closed = true;
+  if (r.status != ContactStatus::kSlip) return;  // closed within the increment and sticking there
+  // Slipping: pull the stick points toward the current contact points so that k_t |g_T| = |Q| on the cone.
+  const double c = r.slip_ratio;
+  h.stick_a = sa + (h.stick_a - sa) * c;
+  h.stick_b = sb + (h.stick_b - sb) * c;
+  h.stick_direction_a = (direction_a + (h.stick_direction_a - direction_a) * c).normalized();
+  h.stick_direction_b = (direction_b + (h.stick_direction_b - direction_b) * c).normalized();
+  const double slip = r.tangential_gap.norm() * (1.0 - c);
+  const Vec3 direction = r.tangential_gap.normalized();
+  if (direction.dot(h.slip_direction) < 0) h.slip_since_reversal = 0;
+  h.slip += slip;
+  h.dissipated_energy += std::max(0.0, -r.friction.dot(direction)) * slip * p.weight;
+  h.slip_since_reversal += slip;
+  h.slip_direction = direction;
+}
+
+double ContactSet::dissipated_energy() const {
+  double total = 0;
+  for (const ContactPoint& p : points_) total += p.history.dissipated_energy;
+  return total;
+}
+
 bool ContactSet::commit(const Mesh& mesh, const std::vector<NodeState>& state) {
   if (!settings_.enabled) return false;
   evaluate(mesh, state, false);
-  for (std::size_t i = 0; i < points_.size(); ++i) {
-    ContactPoint& p = points_[i];
-    const ContactResponse& r = responses_[i];
-    ContactHistory& h = p.history;
-    // Converged parameters (also of open crossings, so that they follow the wires and move on below).
-    if (r.element_b >= 0) {
-      p.xi = r.xi;
-      p.eta = r.eta;
-      if (r.element_a >= 0) p.element_a = r.element_a;
-      p.element_b = r.element_b;
-    }
-    h.slipping = r.status == ContactStatus::kSlip && r.tangential_gap.norm() > 0;
-    if (r.status == ContactStatus::kOpen || r.normal_force < 0) {
-      // An opened contact forgets its stick point; the slip it accumulated stays on record. A touching
-      // point at zero force keeps it: friction is there as soon as pressure builds.
-      h.closed = false;
-      h.slipping = false;
-      h.slip_since_reversal = 0;
-      h.slip_direction.setZero();
-      continue;
-    }
-    if (h.closed && r.status != ContactStatus::kSlip) continue;  // sticking: the anchors stay
-    const double sa = wire_coordinate(p.element_a, r.xi), sb = wire_coordinate(r.element_b, r.eta);
-    // Section-fixed directions of the current contact point on both surfaces.
-    const auto [element_a, element_b] = elements_of(mesh, static_cast<int>(i));
-    const Vec3 direction_a = section_direction(pose(mesh, state, element_a), r.xi, -r.normal);
-    const Vec3 direction_b = section_direction(pose(mesh, state, element_b), r.eta, r.normal);
-    if (!h.closed) {
-      h.closed = true;
-      h.stick_a = sa;
-      h.stick_b = sb;
-      h.stick_direction_a = direction_a;
-      h.stick_direction_b = direction_b;
-    } else {
-      // Slipping: pull the stick points toward the current contact points so that k_t |g_T| = |Q| on the cone.
-      const double c = r.slip_ratio;
-      h.stick_a = sa + (h.stick_a - sa) * c;
-      h.stick_b = sb + (h.stick_b - sb) * c;
-      h.stick_direction_a = (direction_a + (h.stick_direction_a - direction_a) * c).normalized();
-      h.stick_direction_b = (direction_b + (h.stick_direction_b - direction_b) * c).normalized();
-      const double slip = r.tangential_gap.norm() * (1.0 - c);
-      const Vec3 direction = r.tangential_gap.normalized();
-      if (direction.dot(h.slip_direction) < 0) h.slip_since_reversal = 0;
-      h.slip += slip;
-      h.slip_since_reversal += slip;
-      h.slip_direction = direction;
-    }
-  }
+  for (std::size_t i = 0; i < points_.size(); ++i) commit_point(mesh, state, i);
   double moved = 0;
   for (std::size_t n = 0; n < state.size(); ++n) moved = std::max(moved, (state[n].position - searched_positions_[n]).norm());
   if (moved > 0.5 * settings_.search_margin) search(mesh, state);
   responses_.resize(points_.size());
   evaluate(mesh, state, false);  // the committed state's forces and statuses, for output
+  // Points the search just added get their stick points here, so that friction holds them from their first increment.
+  for (std::size_t i = 0; i < points_.size(); ++i)
+    if (!points_[i].history.anchored) commit_point(mesh, state, i);
   update_pattern_membership(true);
   // The pattern keeps pairs that are no longer needed until they are a sizeable share of it: each change costs
   // a new analysis and a fresh factorization, and under load cycles the same pairs come and go again.

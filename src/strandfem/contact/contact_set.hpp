@@ -75,9 +75,13 @@ class ContactSet final : public Interaction {
   int radial_point_count() const;
   int line_point_count() const { return static_cast<int>(points_.size()) - radial_point_count(); }
   int search_count() const { return searches_; }
+  // Work of friction over all slip up to the last commit, N mm.
+  double dissipated_energy() const;
 
  private:
   void search(const Mesh& mesh, const std::vector<NodeState>& state);
+  // Writes one point's history from its response at the converged state (see commit()).
+  void commit_point(const Mesh& mesh, const std::vector<NodeState>& state, std::size_t index);
   void add_line_points(const Mesh& mesh, int group);
   void add_crossing(const Mesh& mesh, int element_a, int element_b, double xi, double eta);
   void set_point_properties(const Mesh& mesh, ContactPoint& p, const Vec3& reference_position);

@@ -13,8 +13,8 @@ void save_point(ArchiveWriter& out, const ContactPoint& p) {
   out.value(std::array<double, 9>{p.xi, p.eta, p.weight, p.radius_a, p.radius_b, p.gap_offset, p.mu1, p.mu2, p.allowed_slip});
   out.value(p.stiffness);
   const ContactHistory& h = p.history;
-  out.value(std::array<bool, 3>{h.closed, h.slipping, p.active});
-  out.value(std::array<double, 4>{h.stick_a, h.stick_b, h.slip, h.slip_since_reversal});
+  out.value(std::array<bool, 4>{h.closed, h.slipping, p.active, h.anchored});
+  out.value(std::array<double, 5>{h.stick_a, h.stick_b, h.slip, h.slip_since_reversal, h.dissipated_energy});
   out.vec3(h.stick_direction_a);
   out.vec3(h.stick_direction_b);
   out.vec3(h.slip_direction);
@@ -34,10 +34,11 @@ ContactPoint load_point(ArchiveReader& in) {
   p.gap_offset = reals[5], p.mu1 = reals[6], p.mu2 = reals[7], p.allowed_slip = reals[8];
   in.value(p.stiffness);
   ContactHistory& h = p.history;
-  const auto flags = in.value<std::array<bool, 3>>();
-  h.closed = flags[0], h.slipping = flags[1], p.active = flags[2];
-  const auto history = in.value<std::array<double, 4>>();
+  const auto flags = in.value<std::array<bool, 4>>();
+  h.closed = flags[0], h.slipping = flags[1], p.active = flags[2], h.anchored = flags[3];
+  const auto history = in.value<std::array<double, 5>>();
   h.stick_a = history[0], h.stick_b = history[1], h.slip = history[2], h.slip_since_reversal = history[3];
+  h.dissipated_energy = history[4];
   h.stick_direction_a = in.vec3();
   h.stick_direction_b = in.vec3();
   h.slip_direction = in.vec3();

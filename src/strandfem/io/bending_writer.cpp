@@ -24,7 +24,8 @@ BendingWriter::BendingWriter(const std::filesystem::path& directory, const CaseD
 void BendingWriter::on_increment(const StaticAnalysis& analysis, const IncrementReport& report, double axial_force,
                                  double transverse_load, double midspan_deflection) {
   if (!active_) return;
-  history_.push_back({report.origin.cycle, report.origin.returning, transverse_load, midspan_deflection, axial_force});
+  history_.push_back({report.origin.cycle, report.origin.returning, transverse_load, midspan_deflection, axial_force,
+                      analysis.model_state().contacts.dissipated_energy()});
   const bool ramp_end = report.step_fraction >= 1.0 - 1e-12;
   // loops.csv is rewritten whenever a cycle closes, so that a long run shows its loops before it ends or stops.
   if (report.origin.cycle > 0 && report.origin.returning && ramp_end) finish();
@@ -49,7 +50,7 @@ nlohmann::json BendingWriter::finish() {
   const std::vector<HysteresisLoop> loops = hysteresis_loops(history_);
   WholeFile file(directory_ / "loops.csv");
   std::ostream& out = file.stream();
-  out << "cycle,area_Nmm,peak_load_N,peak_deflection_mm,start_deflection_mm,end_deflection_mm,secant_stiffness_N_per_mm,"
+  out << "cycle,area_Nmm,friction_dissipation_Nmm,peak_load_N,peak_deflection_mm,start_deflection_mm,end_deflection_mm,secant_stiffness_N_per_mm,"
          "secant_ei_Nm2,loading_tangent_N_per_mm,unloading_tangent_N_per_mm,eq31_ei_max_mm,eq31_ei_min_mm,steady\n";
   nlohmann::json rows = nlohmann::json::array();
   const double length = case_.axial_length;
@@ -61,10 +62,10 @@ nlohmann::json BendingWriter::finish() {
     const double y_max = tension > 0 ? tensioned_beam_midspan_deflection(l.peak_load, tension, ei_max_, length) : 0.0;
     const double y_min = tension > 0 ? tensioned_beam_midspan_deflection(l.peak_load, tension, ei_min_, length) : 0.0;
     const bool steady = i > 0 && loop_is_steady(loops[i - 1], l, 0.02);
-    out << fmt::format("{},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{}\n", l.cycle, l.area,
-                       l.peak_load, l.peak_deflection, l.start_deflection, l.end_deflection, l.secant_stiffness,
+    out << fmt::format("{},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{}\n", l.cycle, l.area,
+                       l.friction_dissipation,                       l.peak_load, l.peak_deflection, l.start_deflection, l.end_deflection, l.secant_stiffness,
                        1e-6 * secant_ei, l.loading_tangent, l.unloading_tangent, y_max, y_min, steady ? 1 : 0);
-    rows.push_back({{"cycle", l.cycle}, {"area_Nmm", l.area}, {"peak_load_N", l.peak_load},
+    rows.push_back({{"cycle", l.cycle}, {"area_Nmm", l.area}, {"friction_dissipation_Nmm", l.friction_dissipation}, {"peak_load_N", l.peak_load},
                     {"peak_deflection_mm", l.peak_deflection}, {"secant_ei_Nm2", 1e-6 * secant_ei},
                     {"eq31_ei_max_mm", y_max}, {"eq31_ei_min_mm", y_min}, {"steady", steady}});
   }

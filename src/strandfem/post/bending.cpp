@@ -68,6 +68,7 @@ std::vector<HysteresisLoop> hysteresis_loops(const std::vector<LoadDeflectionPoi
         twice_area += a.deflection * b.load - b.deflection * a.load;
       }
       loop.area = 0.5 * std::abs(twice_area);
+      loop.friction_dissipation = polygon.back()->friction_dissipation - start.friction_dissipation;
       auto slope = [](const LoadDeflectionPoint& a, const LoadDeflectionPoint& b) {
         const double dy = b.deflection - a.deflection;
         return dy != 0 ? (b.load - a.load) / dy : std::numeric_limits<double>::infinity();

@@ -26,12 +26,16 @@ struct LoadDeflectionPoint {
   double load = 0;        // N
   double deflection = 0;  // mm
   double tension = 0;     // N, axial force of the strand
+  double friction_dissipation = 0;  // N mm: work of friction at every contact since the start of the run
 };
 
 // A cycle's loop: from the state before the cycle, out to the peak load and back.
 struct HysteresisLoop {
   int cycle = 0;
-  double area = 0;                // N mm: energy dissipated in the cycle (polygon closed by a straight line)
+  // N mm: work of V over the cycle (polygon closed by a straight line). It is the friction dissipation plus the
+  // elastic energy the cycle leaves locked in by friction (its set): the two agree once the loop is steady.
+  double area = 0;
+  double friction_dissipation = 0;  // N mm: work of friction at every contact over the cycle
   double peak_load = 0;           // V at the turning point
   double peak_deflection = 0;     // y there
   double peak_tension = 0;        // axial force there

@@ -43,6 +43,7 @@ StrandSnapshot take_strand_snapshot(const Model& model, const ModelState& model_
       c.tangential_force = std::hypot(r.q1, r.q2);
     }
     c.slip = p.history.slip;
+    c.dissipated_energy = p.history.dissipated_energy;
     // After a commit the anchors of a sliding point sit on the friction cone, so |g_T| is the elastic part.
     c.tangential_displacement = c.slip + (r.status != ContactStatus::kOpen ? r.tangential_gap.norm() : 0.0);
     s.contacts.push_back(c);

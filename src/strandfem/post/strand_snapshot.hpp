@@ -25,6 +25,7 @@ struct ContactSample {
   double normal_force = 0;          // P
   double tangential_force = 0;      // |Q|
   double slip = 0;                  // accumulated sliding, mm
+  double dissipated_energy = 0;     // work of friction over that sliding, N mm (line points: over their length)
   // delta of the paper's Fig. 14: the sliding plus the elastic tangential displacement of the penalty spring
   // (|g_T|, the "relative sliding in stick conditions" of paper section 2.3), mm.
   double tangential_displacement = 0;
