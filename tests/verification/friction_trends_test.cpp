@@ -1,6 +1,7 @@
 // Requirement (issue 9): the trends of the paper's friction studies hold on a shortened strand (the inner 19 wires
 // of S32 over 200 mm, T = 10 kN, V = 1 kN out and back): raising mu raises the bending stiffness and shrinks the
-// loop (section 5.1); mu2/mu1 > 1 shrinks the loop (section 5.3). Every peak lies between eq. 3.1's bounds.
+// loop (section 5.1); mu2/mu1 > 1 shrinks the loop (section 5.3). Every peak lies between eq. 3.1's bounds, and
+// most of every loop is friction's work.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -33,24 +34,33 @@ void expect_between_bounds(const std::map<std::string, double>& loop, const std:
   EXPECT_LT(peak, loop.at("eq31_ei_min_mm")) << name;
 }
 
-// Measured: secant EI 77.3, 86.0, 100.6 N m^2 and loop areas 5.95, 5.28, 1.99 N mm for mu 0.1, 0.2, 0.4 (below
-// mu 0.1 the loop grows with mu: at 0.05 its area is 5.03 N mm, nothing slides at mu = 0 or very high mu).
-TEST(FrictionTrends, HigherFrictionStiffensTheStrandAndShrinksTheLoop) {
-  const auto folder = sweep("contact.friction", "0.1,0.2,0.4", "trend_friction");
-  const auto low = first_loop(folder / "contact.friction=0.1"), mid = first_loop(folder / "contact.friction=0.2"),
-             high = first_loop(folder / "contact.friction=0.4");
-  for (const auto& [loop, name] : {std::make_pair(low, "0.1"), std::make_pair(mid, "0.2"), std::make_pair(high, "0.4")})
-    expect_between_bounds(loop, name);
-  ASSERT_FALSE(low.empty() || mid.empty() || high.empty());
-  EXPECT_GT(mid.at("secant_ei_Nm2"), 1.05 * low.at("secant_ei_Nm2"));
-  EXPECT_GT(high.at("secant_ei_Nm2"), 1.05 * mid.at("secant_ei_Nm2"));
-  EXPECT_LT(mid.at("area_Nmm"), 0.95 * low.at("area_Nmm"));
-  EXPECT_LT(high.at("area_Nmm"), 0.5 * mid.at("area_Nmm"));
-  EXPECT_GT(high.at("area_Nmm"), 2e-3 * high.at("peak_load_N") * (high.at("peak_deflection_mm") - high.at("start_deflection_mm")))
-      << "a loop (0.5 % of V y_peak), not an elastic response (1e-5)";
+// Most of the loop is friction's work (the rest is the set the cycle leaves locked in).
+void expect_friction_loop(const std::map<std::string, double>& loop, const std::string& name) {
+  ASSERT_FALSE(loop.empty()) << name;
+  EXPECT_GT(loop.at("friction_dissipation_Nmm"), 0.5 * loop.at("area_Nmm")) << name;
+  EXPECT_LE(loop.at("friction_dissipation_Nmm"), loop.at("area_Nmm")) << name;
 }
 
-// Measured: mu2/mu1 = 5 at mu1 = 0.2 gives a loop of 4.72 N mm against 5.28 and secant EI 89.4 against 86.0 N m^2.
+// Measured (session 22): secant EI 105.9, 154.8, 206.5 N m^2, loop areas 75.9, 34.3, 13.8 N mm and friction
+// dissipation 61.4, 25.2, 10.4 N mm for mu 0.2, 0.4, 0.8.
+TEST(FrictionTrends, HigherFrictionStiffensTheStrandAndShrinksTheLoop) {
+  const auto folder = sweep("contact.friction", "0.2,0.4,0.8", "trend_friction");
+  const auto low = first_loop(folder / "contact.friction=0.2"), mid = first_loop(folder / "contact.friction=0.4"),
+             high = first_loop(folder / "contact.friction=0.8");
+  for (const auto& [loop, name] : {std::make_pair(low, "0.2"), std::make_pair(mid, "0.4"), std::make_pair(high, "0.8")}) {
+    expect_between_bounds(loop, name);
+    expect_friction_loop(loop, name);
+  }
+  ASSERT_FALSE(low.empty() || mid.empty() || high.empty());
+  EXPECT_GT(mid.at("secant_ei_Nm2"), 1.2 * low.at("secant_ei_Nm2"));
+  EXPECT_GT(high.at("secant_ei_Nm2"), 1.2 * mid.at("secant_ei_Nm2"));
+  EXPECT_LT(mid.at("area_Nmm"), 0.6 * low.at("area_Nmm"));
+  EXPECT_LT(high.at("area_Nmm"), 0.6 * mid.at("area_Nmm"));
+  EXPECT_GT(high.at("area_Nmm"), 2e-2 * high.at("peak_load_N") * (high.at("peak_deflection_mm") - high.at("start_deflection_mm")))
+      << "a loop (7 % of V y_peak), not an elastic response";
+}
+
+// Measured: mu2/mu1 = 5 at mu1 = 0.2 gives a loop of 67.1 N mm against 75.9 and secant EI 111.5 against 105.9 N m^2.
 TEST(FrictionTrends, OrthotropicFrictionShrinksTheLoop) {
   const auto folder = sweep("contact.orthotropy_ratio", "1,5", "trend_orthotropy");
   const auto isotropic = first_loop(folder / "contact.orthotropy_ratio=1"), orthotropic = first_loop(folder / "contact.orthotropy_ratio=5");
@@ -58,7 +68,7 @@ TEST(FrictionTrends, OrthotropicFrictionShrinksTheLoop) {
   expect_between_bounds(orthotropic, "ratio 5");
   ASSERT_FALSE(isotropic.empty() || orthotropic.empty());
   EXPECT_LT(orthotropic.at("area_Nmm"), 0.95 * isotropic.at("area_Nmm"));
-  EXPECT_GT(orthotropic.at("secant_ei_Nm2"), isotropic.at("secant_ei_Nm2"));
+  EXPECT_GT(orthotropic.at("secant_ei_Nm2"), 1.02 * isotropic.at("secant_ei_Nm2"));
 }
 
 }  // namespace
