@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <map>
 
 #include "program_runner.hpp"
 
@@ -26,7 +27,12 @@ TEST(IdleStep, RestAndHoldStepsConvergeAtOnceWithFrictionalContact) {
   const ProgramRun r = run_program("run " + file + " -q -o " + ::testing::TempDir() + "/idle_out", "idle");
   ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
   const auto rows = read_csv(std::filesystem::path(::testing::TempDir()) / "idle_out" / "history.csv");
-  ASSERT_EQ(rows.size(), 13u);
+  // The idle steps take their nominal increments; the pull may cut its first one (it did at an elastic slip of
+  // 0.0005, with 21 Newton iterations at 1/8 of the step).
+  std::map<int, int> increments;
+  for (const auto& row : rows) ++increments[static_cast<int>(row.at("step"))];
+  EXPECT_EQ(increments, (std::map<int, int>{{1, 2}, {2, 2}, {3, increments[3]}, {4, 3}, {5, 2}}));
+  EXPECT_GE(increments[3], 4);
   double pulled_force = 0;
   for (const auto& row : rows) {
     const int s = static_cast<int>(row.at("step"));
