@@ -42,6 +42,12 @@ def save(fig, ax, xlabel, ylabel, path):
     return path
 
 
+def energy(value_nmm):
+    """An energy from N mm, written in N m from 10 N m on."""
+    value = float(value_nmm)
+    return f"{value / 1000:.3g} N m" if abs(value) >= 1e4 else f"{value:.3g} N mm"
+
+
 def plot_folder(folder):
     history = rows(folder, "history.csv")
     loops = rows(folder, "loops.csv")
@@ -56,11 +62,17 @@ def plot_folder(folder):
     start = history[first - 1] if first > 0 else cyclic[0]
     y0 = float(start["midspan_deflection_mm"])
     cycles = sorted({int(r["cycle"]) for r in cyclic})
+    loop_of = {int(r["cycle"]): r for r in loops}
     for c in cycles:
         pts = [start] if c == cycles[0] else []
         pts += [r for r in cyclic if int(r["cycle"]) == c]
+        label = f"cycle {c}"
+        if c in loop_of and "friction_dissipation_Nmm" in loop_of[c]:
+            # The loop's area is friction's work plus the set the cycle locks in (docs/theory.md, "Loops").
+            label += (f": loop {energy(loop_of[c]['area_Nmm'])}, friction "
+                      f"{energy(loop_of[c]['friction_dissipation_Nmm'])}")
         ax.plot([float(r["midspan_deflection_mm"]) - y0 for r in pts], [float(r["transverse_load_N"]) for r in pts],
-                "-o", ms=2.5, lw=1, label=f"cycle {c}")
+                "-o", ms=2.5, lw=1, label=label)
     if loops:
         peak = float(loops[0]["peak_load_N"])
         for key, style, label in (("eq31_ei_max_mm", "k--", "EImax (eq. 3.1)"), ("eq31_ei_min_mm", "k:", "EImin (eq. 3.1)")):
