@@ -3,8 +3,10 @@
 // 7-wire strand (Costello's linear theory, Table 2 contact forces, mesh and contact pair counts).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "program_runner.hpp"
@@ -83,6 +85,19 @@ TEST(ContactProgram, ParallelWiresLineLoadStickSlipAndHysteresis) {
   EXPECT_NEAR(std::abs(area), expected_area, 0.03 * expected_area);
   EXPECT_NEAR(ends.at(3).at("monitor_fz_N"), -Q, 1e-6 * Q);
   EXPECT_NEAR(ends.at(4).at("monitor_fz_N"), Q, 1e-6 * Q);
+  // Friction's work summed over the contact points (dissipated_energy_Nmm) over the same closed cycle is its area.
+  std::map<int, int> last_increment;
+  for (const auto& c : contacts) {
+    int& last = last_increment[static_cast<int>(c.at("step"))];
+    last = std::max(last, static_cast<int>(c.at("increment")));
+  }
+  auto dissipated_by_end_of = [&](int step) {
+    double sum = 0;
+    for (const auto& c : contacts)
+      if (c.at("step") == step && c.at("increment") == last_increment.at(step)) sum += c.at("dissipated_energy_Nmm");
+    return sum;
+  };
+  EXPECT_NEAR(dissipated_by_end_of(4) - dissipated_by_end_of(2), expected_area, 0.03 * expected_area);
 }
 
 // Surface kinematics: a wire turned about its own axis on a parallel wire (centerlines held) resists with
