@@ -31,6 +31,7 @@ ContactSample sample(ContactStatus status, double normal_force, double slip, boo
   c.tangential_force = status == ContactStatus::kOpen ? 0.0 : 0.3 * normal_force;
   c.slip = slip;
   c.tangential_displacement = slip + 0.01;
+  c.dissipated_energy = 0.3 * normal_force * slip;  // as if it had slid at mu P, P as now
   c.frictional = frictional;
   return c;
 }
@@ -74,10 +75,12 @@ TEST(BendingProfiles, StatusMapAndChangesSinceTheStartOfTheLoading) {
   EXPECT_DOUBLE_EQ(p.contacts[1].tangential_force_change, 0.3 * (90 - 100));
   EXPECT_DOUBLE_EQ(p.contacts[1].slip_change, 0.3);
   EXPECT_DOUBLE_EQ(p.contacts[1].tangential_displacement_change, 0.3);
+  EXPECT_DOUBLE_EQ(p.contacts[1].dissipated_energy_change, 0.3 * (90 * 0.5 - 100 * 0.2));
   // The new crossing counts from zero force and slip.
   EXPECT_DOUBLE_EQ(p.contacts[5].normal_force_change, 40.0);
   EXPECT_DOUBLE_EQ(p.contacts[5].slip_change, 0.02);
   EXPECT_DOUBLE_EQ(p.contacts[5].tangential_displacement_change, 0.03);
+  EXPECT_DOUBLE_EQ(p.contacts[5].dissipated_energy_change, 0.3 * 40 * 0.02);
   // A new loading half forgets what the last one saw.
   tracker.set_start(peak);
   tracker.observe(as_ints({S::kSlip, S::kSlip, S::kSlip, S::kSlip, S::kStick, S::kOpen, S::kSlip}));

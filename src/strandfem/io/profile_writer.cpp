@@ -55,6 +55,7 @@ void ProfileWriter::write(const BendingProfiles& p) {
   struct Totals {
     std::map<std::string, int> statuses;
     double normal_force = 0, tangential_force = 0;
+    double dissipated_energy = 0;  // over the loading half, N mm
     int closed = 0;
   };
   std::map<std::string, Totals> interfaces;
@@ -70,6 +71,7 @@ void ProfileWriter::write(const BendingProfiles& p) {
     Totals& t = interfaces[fmt::format("{} {}-{}", line ? "line" : "point", std::min(s.layer_a, s.layer_b),
                                        std::max(s.layer_a, s.layer_b))];
     ++t.statuses[to_string(r.map_status)];
+    t.dissipated_energy += r.dissipated_energy_change;
     if (r.map_status == MapStatus::kOpen) continue;
     ++t.closed;
     t.normal_force += s.normal_force;
@@ -81,6 +83,7 @@ void ProfileWriter::write(const BendingProfiles& p) {
     nlohmann::json j = t.statuses;
     j["mean_normal_force"] = t.closed ? t.normal_force / t.closed : 0.0;
     j["mean_tangential_force"] = t.closed ? t.tangential_force / t.closed : 0.0;
+    j["loading_friction_dissipation_Nmm"] = t.dissipated_energy;
     block["interfaces"][name] = j;
   }
   summary_.push_back(block);

@@ -66,6 +66,7 @@ BendingProfiles LoadingHalfTracker::at_peak(int cycle, const StrandSnapshot& pea
     row.tangential_force_change = p.tangential_force - before.tangential_force;
     row.slip_change = p.slip - before.slip;
     row.tangential_displacement_change = p.tangential_displacement - before.tangential_displacement;
+    row.dissipated_energy_change = p.dissipated_energy - before.dissipated_energy;
     if (p.status != open && !p.frictional) {
       row.map_status = MapStatus::kFrictionless;
     } else if (p.status == static_cast<int>(ContactStatus::kStick)) {

@@ -34,6 +34,7 @@ struct ContactProfileRow {
   ContactSample at_peak;
   double normal_force_change = 0, tangential_force_change = 0, slip_change = 0;  // peak - start
   double tangential_displacement_change = 0;
+  double dissipated_energy_change = 0;  // friction's work at the point over the loading half, N mm
   MapStatus map_status = MapStatus::kOpen;
 };
 
