@@ -450,12 +450,13 @@ bool ContactSet::commit(const Mesh& mesh, const std::vector<NodeState>& state) {
   for (std::size_t i = 0; i < points_.size(); ++i) commit_point(mesh, state, i);
   double moved = 0;
   for (std::size_t n = 0; n < state.size(); ++n) moved = std::max(moved, (state[n].position - searched_positions_[n]).norm());
+  const std::size_t committed = points_.size();
   if (moved > 0.5 * settings_.search_margin) search(mesh, state);
   responses_.resize(points_.size());
   evaluate(mesh, state, false);  // the committed state's forces and statuses, for output
-  // Points the search just added get their stick points here, so that friction holds them from their first increment.
-  for (std::size_t i = 0; i < points_.size(); ++i)
-    if (!points_[i].history.anchored) commit_point(mesh, state, i);
+  // Points the search just added (it only appends) get their stick points here, so that friction holds them from
+  // their first increment.
+  for (std::size_t i = committed; i < points_.size(); ++i) commit_point(mesh, state, i);
   update_pattern_membership(true);
   // The pattern keeps pairs that are no longer needed until they are a sizeable share of it: each change costs
   // a new analysis and a fresh factorization, and under load cycles the same pairs come and go again.

@@ -50,8 +50,8 @@ nlohmann::json BendingWriter::finish() {
   const std::vector<HysteresisLoop> loops = hysteresis_loops(history_);
   WholeFile file(directory_ / "loops.csv");
   std::ostream& out = file.stream();
-  out << "cycle,area_Nmm,friction_dissipation_Nmm,peak_load_N,peak_deflection_mm,start_deflection_mm,end_deflection_mm,secant_stiffness_N_per_mm,"
-         "secant_ei_Nm2,loading_tangent_N_per_mm,unloading_tangent_N_per_mm,eq31_ei_max_mm,eq31_ei_min_mm,steady\n";
+  out << "cycle,area_Nmm,friction_dissipation_Nmm,peak_load_N,peak_deflection_mm,start_deflection_mm,end_deflection_mm,"
+         "secant_stiffness_N_per_mm,secant_ei_Nm2,loading_tangent_N_per_mm,unloading_tangent_N_per_mm,eq31_ei_max_mm,eq31_ei_min_mm,steady\n";
   nlohmann::json rows = nlohmann::json::array();
   const double length = case_.axial_length;
   for (std::size_t i = 0; i < loops.size(); ++i) {
@@ -62,11 +62,12 @@ nlohmann::json BendingWriter::finish() {
     const double y_max = tension > 0 ? tensioned_beam_midspan_deflection(l.peak_load, tension, ei_max_, length) : 0.0;
     const double y_min = tension > 0 ? tensioned_beam_midspan_deflection(l.peak_load, tension, ei_min_, length) : 0.0;
     const bool steady = i > 0 && loop_is_steady(loops[i - 1], l, 0.02);
-    out << fmt::format("{},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{}\n", l.cycle, l.area,
-                       l.friction_dissipation,                       l.peak_load, l.peak_deflection, l.start_deflection, l.end_deflection, l.secant_stiffness,
-                       1e-6 * secant_ei, l.loading_tangent, l.unloading_tangent, y_max, y_min, steady ? 1 : 0);
-    rows.push_back({{"cycle", l.cycle}, {"area_Nmm", l.area}, {"friction_dissipation_Nmm", l.friction_dissipation}, {"peak_load_N", l.peak_load},
-                    {"peak_deflection_mm", l.peak_deflection}, {"secant_ei_Nm2", 1e-6 * secant_ei},
+    out << fmt::format("{},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{}\n", l.cycle,
+                       l.area, l.friction_dissipation, l.peak_load, l.peak_deflection, l.start_deflection,
+                       l.end_deflection, l.secant_stiffness, 1e-6 * secant_ei, l.loading_tangent, l.unloading_tangent,
+                       y_max, y_min, steady ? 1 : 0);
+    rows.push_back({{"cycle", l.cycle}, {"area_Nmm", l.area}, {"friction_dissipation_Nmm", l.friction_dissipation},
+                    {"peak_load_N", l.peak_load}, {"peak_deflection_mm", l.peak_deflection}, {"secant_ei_Nm2", 1e-6 * secant_ei},
                     {"eq31_ei_max_mm", y_max}, {"eq31_ei_min_mm", y_min}, {"steady", steady}});
   }
   file.commit();
