@@ -669,16 +669,15 @@ TEST(ContactSet, InitialOverlapIsOffset) {
   for (const ContactResponse& r : contacts.responses()) EXPECT_NEAR(r.gap, -0.01, 1e-9);
 }
 
-// The search finds every crossing the helix geometry implies. Paper's 120-wire strand (Table 3 geometry),
-// straight: crossings per layer interface against the helix count (tight, away from the ends where
-// crossings are cut off) and against eq. 2.4, which puts both helices on R_ct (a few percent off).
-TEST(ContactSet, RadialCrossingsMatchEquation24) {
+// The search finds every crossing the helix geometry implies: crossings per layer interface against the helix
+// count (tight, away from the ends where crossings are cut off) and against eq. 2.4, which puts both helices on
+// R_ct (a few percent off). Lateral (line) contacts only within a layer and between the core and layer 1.
+// `layers`: wires, diameter, lay angle in degrees, core first.
+void expect_contacts_follow_the_layout(const std::vector<std::array<double, 3>>& layers) {
   StrandSpec strand;
   strand.length = 200;
   strand.materials["steel"] = {188000, 0.3, 0, "steel"};
   const double deg = M_PI / 180;
-  const std::vector<std::array<double, 3>> layers = {{1, 5.8, 0},      {7, 4.3, 11.94}, {17, 3.2, 14.75}, {14, 5.3, 14.37},
-                                                     {21, 5.0, 15.23}, {27, 5.0, 15.66}, {33, 5.0, 15.95}};
   const auto directions = default_lay_directions(static_cast<int>(layers.size()));
   for (std::size_t i = 0; i < layers.size(); ++i)
     strand.layers.push_back({static_cast<int>(layers[i][0]), layers[i][1], "steel", layers[i][2] * deg, directions[i], 0});
@@ -701,10 +700,20 @@ TEST(ContactSet, RadialCrossingsMatchEquation24) {
     EXPECT_NEAR(total, helix, strand.layers[layer].wires * strand.layers[layer - 1].wires) << "layer " << layer;
     EXPECT_NEAR(total / eq24, 1.0, 0.10) << "layer " << layer << ": " << total << " crossings, eq. 2.4 " << eq24;
   }
-  // Lateral (line) contacts only within a layer and between the core and layer 1.
   for (const ContactPoint& p : contacts.points())
     if (p.kind == ContactKind::kLine)
       EXPECT_TRUE(mesh.wires[p.wire_a].layer == mesh.wires[p.wire_b].layer || (mesh.wires[p.wire_b].layer == 0 && mesh.wires[p.wire_a].layer == 1));
+}
+
+// Paper's 120-wire strand (Table 3 geometry), straight.
+TEST(ContactSet, RadialCrossingsMatchEquation24) {
+  expect_contacts_follow_the_layout({{1, 5.8, 0}, {7, 4.3, 11.94}, {17, 3.2, 14.75}, {14, 5.3, 14.37}, {21, 5.0, 15.23}, {27, 5.0, 15.66}, {33, 5.0, 15.95}});
+}
+
+// ACSR Cardinal (Table 5): the steel layer and the first aluminum layer cross at only 18 degrees (6.06 + 11.99),
+// and they still touch at crossings (the paper's interface 1-2, Fig. 14), not along lines.
+TEST(ContactSet, CardinalSteelAndAluminumLayersCrossAtPoints) {
+  expect_contacts_follow_the_layout({{1, 3.34, 0}, {6, 3.34, 6.06}, {12, 3.32, 11.99}, {18, 3.32, 11.80}, {24, 3.32, 13.10}});
 }
 
 }  // namespace

@@ -28,6 +28,60 @@ ElementCenterline<double> centerline(const Mesh& mesh, const std::vector<NodeSta
   return x;
 }
 
+Vec3 to_vec(const V3<double>& v) { return Vec3(v[0], v[1], v[2]); }
+
+// A candidate element's chord in the reference configuration, seen from the strand axis (through the origin).
+struct ChordLayout {
+  Vec3 tangent = Vec3::UnitZ();
+  double hand = 0;           // sine of the lay angle, signed by the hand of the helix (0 on the axis)
+  double axis_distance = 0;  // of the chord's middle node, mm
+  double radial_slope = 0;   // |chord direction . radial direction|: 0 for a helix about the axis (by symmetry)
+};
+
+ChordLayout chord_layout(const ElementCenterline<double>& x, const Vec3& axis) {
+  ChordLayout c;
+  const Vec3 first = to_vec(x[0]), middle = to_vec(x[1]), last = to_vec(x[2]);
+  c.tangent = (last - first).normalized();
+  const Vec3 radial = middle - middle.dot(axis) * axis;
+  c.axis_distance = radial.norm();
+  if (c.axis_distance > 0) {
+    c.hand = radial.normalized().cross(c.tangent).dot(axis);
+    c.radial_slope = std::abs(radial.normalized().dot(c.tangent));
+  }
+  return c;
+}
+
+// Sums over a wire pair's candidate element pairs ("low": the lower wire index).
+struct PairLayout {
+  double angle_sum = 0, hand_low = 0, hand_high = 0, axis_distance_low = 0, axis_distance_high = 0;
+  double radial_slope_low = 0, radial_slope_high = 0;
+  int count = 0;
+};
+
+// How two wires touch. Strand wires follow the layout (paper section 2.3): wires of one layer run side by side,
+// and a helix keeps its distance from a straight wire on the axis (the core), so both are line contacts;
+// helices of opposite hand in different layers cross, at points, however small the angle between them (ACSR
+// Cardinal's steel and first aluminum layers cross at 18 degrees). Other pairs (beam lines; layers laid the same
+// way, which run nearly parallel) are line contacts when their chords are closer than `line_contact_angle`.
+ContactKind classify_pair(const Mesh& mesh, int low, int high, const PairLayout& layout, double line_contact_angle) {
+  const MeshWire &a = mesh.wires[low], &b = mesh.wires[high];
+  const double n = layout.count;
+  if (a.layer >= 0 && b.layer >= 0) {
+    // On the axis: within a tenth of the wire's radius (exactly 0 for a strand's core). A helix about the axis
+    // runs square to its radius (chords within 3 degrees of that).
+    auto on_axis = [&](const MeshWire& w, double distance_sum) {
+      return distance_sum / n < 0.1 * mesh.sections[w.section]->geometry().contact_radius;
+    };
+    auto helix = [&](double radial_slope_sum) { return radial_slope_sum / n < 0.05; };
+    if (a.layer == b.layer) return ContactKind::kLine;
+    if ((on_axis(a, layout.axis_distance_low) && helix(layout.radial_slope_high)) ||
+        (on_axis(b, layout.axis_distance_high) && helix(layout.radial_slope_low)))
+      return ContactKind::kLine;
+    if (layout.hand_low * layout.hand_high < 0) return ContactKind::kPoint;
+  }
+  return layout.angle_sum / n < line_contact_angle ? ContactKind::kLine : ContactKind::kPoint;
+}
+
 ElementPose<double> pose(const Mesh& mesh, const std::vector<NodeState>& state, int element) {
   ElementPose<double> e;
   e.x = centerline(mesh, state, element);
@@ -37,8 +91,6 @@ ElementPose<double> pose(const Mesh& mesh, const std::vector<NodeState>& state, 
   }
   return e;
 }
-
-Vec3 to_vec(const V3<double>& v) { return Vec3(v[0], v[1], v[2]); }
 
 int local_index(const Mesh& mesh, int element) {
   return element - mesh.wires[mesh.elements[element].wire].elements.front();
@@ -189,19 +241,29 @@ void ContactSet::search(const Mesh& mesh, const std::vector<NodeState>& state) {
   }
   const auto pairs = find_candidate_pairs(mesh, state, inflation);
   auto wire_key = [](int a, int b) { return std::make_pair(std::min(a, b), std::max(a, b)); };
-  // Classify each new wire pair once, by the mean angle between the chords of its candidate elements.
-  std::map<std::pair<int, int>, std::pair<double, int>> angles;
+  // Classify each new wire pair once, from the candidate elements' chords in the reference configuration (the
+  // strand's layout, not where bending has moved it).
+  std::map<std::pair<int, int>, PairLayout> layouts;
   for (const auto& [e, f] : pairs) {
-    const auto key = wire_key(mesh.elements[e].wire, mesh.elements[f].wire);
+    const int we = mesh.elements[e].wire, wf = mesh.elements[f].wire;
+    const auto key = wire_key(we, wf);
     if (wire_pair_kind_.count(key)) continue;
-    const auto xe = centerline(mesh, state, e), xf = centerline(mesh, state, f);
-    const Vec3 te = (to_vec(xe[2]) - to_vec(xe[0])).normalized(), tf = (to_vec(xf[2]) - to_vec(xf[0])).normalized();
-    auto& acc = angles[key];
-    acc.first += std::acos(std::min(1.0, std::abs(te.dot(tf)))) * 180.0 / M_PI;
-    acc.second += 1;
+    auto& layout = layouts[key];
+    const ChordLayout ce = chord_layout(centerline(mesh, reference_, e), settings_.strand_axis);
+    const ChordLayout cf = chord_layout(centerline(mesh, reference_, f), settings_.strand_axis);
+    const ChordLayout& low = we < wf ? ce : cf;
+    const ChordLayout& high = we < wf ? cf : ce;
+    layout.angle_sum += std::acos(std::min(1.0, std::abs(ce.tangent.dot(cf.tangent)))) * 180.0 / M_PI;
+    layout.hand_low += low.hand;
+    layout.hand_high += high.hand;
+    layout.axis_distance_low += low.axis_distance;
+    layout.axis_distance_high += high.axis_distance;
+    layout.radial_slope_low += low.radial_slope;
+    layout.radial_slope_high += high.radial_slope;
+    layout.count += 1;
   }
-  for (const auto& [key, acc] : angles)
-    wire_pair_kind_[key] = acc.first / acc.second < settings_.line_contact_angle ? ContactKind::kLine : ContactKind::kPoint;
+  for (const auto& [key, layout] : layouts)
+    wire_pair_kind_[key] = classify_pair(mesh, key.first, key.second, layout, settings_.line_contact_angle);
 
   std::vector<int> new_groups;
   for (const auto& [e, f] : pairs) {
