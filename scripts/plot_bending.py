@@ -43,9 +43,11 @@ def save(fig, ax, xlabel, ylabel, path):
 
 
 def energy(value_nmm):
-    """An energy from N mm, written in N m from 10 N m on."""
+    """An energy from N mm, written in N m from 1 N m on (3 significant digits, never in powers of ten)."""
     value = float(value_nmm)
-    return f"{value / 1000:.3g} N m" if abs(value) >= 1e4 else f"{value:.3g} N mm"
+    if abs(value) >= 1e3:
+        return f"{value / 1000:#.3g} N m".replace(". N", " N")
+    return f"{value:#.3g} N mm".replace(". N", " N")
 
 
 def plot_folder(folder):
