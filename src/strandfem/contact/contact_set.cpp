@@ -3,6 +3,7 @@
 #include "strandfem/core/quadrature.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iterator>
 #include <stdexcept>
@@ -30,31 +31,36 @@ ElementCenterline<double> centerline(const Mesh& mesh, const std::vector<NodeSta
 
 Vec3 to_vec(const V3<double>& v) { return Vec3(v[0], v[1], v[2]); }
 
-// A candidate element's chord in the reference configuration, seen from the strand axis (through the origin).
-struct ChordLayout {
-  Vec3 tangent = Vec3::UnitZ();
+// How a wire lies about the strand axis (through the origin), from an element's chord in the reference
+// configuration; summed over a pair's candidate elements, then their mean.
+struct WireLayout {
   double hand = 0;           // sine of the lay angle, signed by the hand of the helix (0 on the axis)
   double axis_distance = 0;  // of the chord's middle node, mm
   double radial_slope = 0;   // |chord direction . radial direction|: 0 for a helix about the axis (by symmetry)
+  void add(const WireLayout& other) {
+    hand += other.hand;
+    axis_distance += other.axis_distance;
+    radial_slope += other.radial_slope;
+  }
 };
 
-ChordLayout chord_layout(const ElementCenterline<double>& x, const Vec3& axis) {
-  ChordLayout c;
-  const Vec3 first = to_vec(x[0]), middle = to_vec(x[1]), last = to_vec(x[2]);
-  c.tangent = (last - first).normalized();
+WireLayout chord_layout(const ElementCenterline<double>& x, const Vec3& axis, Vec3& tangent) {
+  WireLayout c;
+  const Vec3 middle = to_vec(x[1]);
+  tangent = (to_vec(x[2]) - to_vec(x[0])).normalized();
   const Vec3 radial = middle - middle.dot(axis) * axis;
   c.axis_distance = radial.norm();
   if (c.axis_distance > 0) {
-    c.hand = radial.normalized().cross(c.tangent).dot(axis);
-    c.radial_slope = std::abs(radial.normalized().dot(c.tangent));
+    c.hand = radial.normalized().cross(tangent).dot(axis);
+    c.radial_slope = std::abs(radial.normalized().dot(tangent));
   }
   return c;
 }
 
-// Sums over a wire pair's candidate element pairs ("low": the lower wire index).
+// Sums over a wire pair's candidate element pairs; wire[0] is the lower wire index.
 struct PairLayout {
-  double angle_sum = 0, hand_low = 0, hand_high = 0, axis_distance_low = 0, axis_distance_high = 0;
-  double radial_slope_low = 0, radial_slope_high = 0;
+  double angle_sum = 0;
+  std::array<WireLayout, 2> wire;
   int count = 0;
 };
 
@@ -67,17 +73,16 @@ ContactKind classify_pair(const Mesh& mesh, int low, int high, const PairLayout&
   const MeshWire &a = mesh.wires[low], &b = mesh.wires[high];
   const double n = layout.count;
   if (a.layer >= 0 && b.layer >= 0) {
+    if (a.layer == b.layer) return ContactKind::kLine;
     // On the axis: within a tenth of the wire's radius (exactly 0 for a strand's core). A helix about the axis
     // runs square to its radius (chords within 3 degrees of that).
-    auto on_axis = [&](const MeshWire& w, double distance_sum) {
-      return distance_sum / n < 0.1 * mesh.sections[w.section]->geometry().contact_radius;
+    auto on_axis = [&](const MeshWire& w, const WireLayout& sums) {
+      return sums.axis_distance / n < 0.1 * mesh.sections[w.section]->geometry().contact_radius;
     };
-    auto helix = [&](double radial_slope_sum) { return radial_slope_sum / n < 0.05; };
-    if (a.layer == b.layer) return ContactKind::kLine;
-    if ((on_axis(a, layout.axis_distance_low) && helix(layout.radial_slope_high)) ||
-        (on_axis(b, layout.axis_distance_high) && helix(layout.radial_slope_low)))
-      return ContactKind::kLine;
-    if (layout.hand_low * layout.hand_high < 0) return ContactKind::kPoint;
+    auto helix = [&](const WireLayout& sums) { return sums.radial_slope / n < 0.05; };
+    const auto& [la, lb] = layout.wire;
+    if ((on_axis(a, la) && helix(lb)) || (on_axis(b, lb) && helix(la))) return ContactKind::kLine;
+    if (la.hand * lb.hand < 0) return ContactKind::kPoint;
   }
   return layout.angle_sum / n < line_contact_angle ? ContactKind::kLine : ContactKind::kPoint;
 }
@@ -249,17 +254,12 @@ void ContactSet::search(const Mesh& mesh, const std::vector<NodeState>& state) {
     const auto key = wire_key(we, wf);
     if (wire_pair_kind_.count(key)) continue;
     auto& layout = layouts[key];
-    const ChordLayout ce = chord_layout(centerline(mesh, reference_, e), settings_.strand_axis);
-    const ChordLayout cf = chord_layout(centerline(mesh, reference_, f), settings_.strand_axis);
-    const ChordLayout& low = we < wf ? ce : cf;
-    const ChordLayout& high = we < wf ? cf : ce;
-    layout.angle_sum += std::acos(std::min(1.0, std::abs(ce.tangent.dot(cf.tangent)))) * 180.0 / M_PI;
-    layout.hand_low += low.hand;
-    layout.hand_high += high.hand;
-    layout.axis_distance_low += low.axis_distance;
-    layout.axis_distance_high += high.axis_distance;
-    layout.radial_slope_low += low.radial_slope;
-    layout.radial_slope_high += high.radial_slope;
+    Vec3 te, tf;
+    const WireLayout ce = chord_layout(centerline(mesh, reference_, e), settings_.strand_axis, te);
+    const WireLayout cf = chord_layout(centerline(mesh, reference_, f), settings_.strand_axis, tf);
+    layout.angle_sum += std::acos(std::min(1.0, std::abs(te.dot(tf)))) * 180.0 / M_PI;
+    layout.wire[0].add(we < wf ? ce : cf);
+    layout.wire[1].add(we < wf ? cf : ce);
     layout.count += 1;
   }
   for (const auto& [key, layout] : layouts)
