@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
+#include <fstream>
+
+#include "strandfem/io/case_file.hpp"
 #include "strandfem/io/yaml_reader.hpp"
 
 namespace strandfem {
@@ -50,6 +53,31 @@ TEST(CaseVariant, PathsThatLeadNowhereAreRefusedByName) {
   EXPECT_NE(message("contact.friction", "").find("expected a value"), std::string::npos);
   EXPECT_EQ(variant_folder_name("contact.friction", "0.5"), "contact.friction=0.5");
   EXPECT_EQ(variant_folder_name("a.b", "[1, 2]"), "a.b=_1__2_");
+}
+
+// The sweep key contact.orthotropy_ratio reaches the pairs without a ratio of their own (Fig. 19: the steel pairs
+// stay isotropic), and the results' configuration says which ratio each pair ran with.
+TEST(CaseVariant, OrthotropyRatioReachesPairsWithoutTheirOwn) {
+  const std::string text = set_case_key(std::string(kCase) + R"(materials:
+  steel: {E: 200000, nu: 0.3}
+  aluminum: {E: 65000, nu: 0.33}
+steps:
+  - {name: pull, increments: 1, axial_strain: 0.001}
+)", "contact", "{friction: 0.5, friction_pairs: [{materials: [steel, steel], mu: 0.3, orthotropy_ratio: 1}, {materials: [steel, aluminum], mu: 0.4}]}");
+  std::string with_materials = set_case_key(text, "strand.layers.0.material", "steel");
+  with_materials = set_case_key(with_materials, "strand.layers.1.material", "aluminum");
+  const YAML::Node with_ratio = YAML::Load(set_case_key(with_materials, "contact.orthotropy_ratio", "15"));
+  const std::string file = ::testing::TempDir() + "/orthotropy_pairs.yaml";
+  std::ofstream(file) << YAML::Dump(with_ratio);
+  const CaseDefinition c = load_case(file);
+  EXPECT_DOUBLE_EQ(c.model.contact_settings.orthotropy_at("steel", "steel"), 1.0);
+  EXPECT_DOUBLE_EQ(c.model.contact_settings.orthotropy_at("aluminum", "steel"), 15.0);
+  EXPECT_DOUBLE_EQ(c.model.contact_settings.orthotropy_at("aluminum", "aluminum"), 15.0);
+  const nlohmann::json& pairs = c.resolved["contact"]["pairs"];
+  ASSERT_EQ(pairs.size(), 2u);
+  EXPECT_DOUBLE_EQ(pairs[0]["orthotropy_ratio"].get<double>(), 1.0);
+  EXPECT_DOUBLE_EQ(pairs[1]["orthotropy_ratio"].get<double>(), 15.0);
+  EXPECT_DOUBLE_EQ(pairs[1]["mu"].get<double>(), 0.4);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <stdexcept>
 
 #include "strandfem/contact/contact_set.hpp"
 #include "strandfem/mesh/mesh.hpp"
@@ -122,6 +123,18 @@ TEST(ContactSettings, FrictionPerMaterialPairAndAxialZone) {
   EXPECT_DOUBLE_EQ(s.friction_at("steel", "aluminum", 10), 0.7);
   EXPECT_DOUBLE_EQ(s.friction_at("aluminum", "aluminum", 10), 0.7);
   EXPECT_DOUBLE_EQ(s.friction_at("aluminum", "aluminum", 30), 0.1);
+}
+
+// mu2 / mu1 per material pair over the contact's ratio (Fig. 19: aluminum contacts orthotropic, steel pairs not).
+TEST(ContactSettings, OrthotropyPerMaterialPair) {
+  ContactSettings s;
+  s.orthotropy_ratio = 10;
+  s.pair_friction = {{"steel", "steel", 0.3, 1.0}, {"steel", "aluminum", 0.5}};
+  EXPECT_DOUBLE_EQ(s.orthotropy_at("steel", "steel"), 1.0);
+  EXPECT_DOUBLE_EQ(s.orthotropy_at("aluminum", "steel"), 10.0);  // an entry without a ratio takes the contact's
+  EXPECT_DOUBLE_EQ(s.orthotropy_at("aluminum", "aluminum"), 10.0);
+  s.pair_friction[0].orthotropy_ratio = -1;
+  EXPECT_THROW(s.validate(), std::invalid_argument);
 }
 
 // Eqs. 2.5-2.6 as documented: point contacts N/mm, line contacts the same divided by d (N/mm^2).

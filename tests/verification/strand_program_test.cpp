@@ -79,6 +79,8 @@ TEST(StrandProgram, BadInputGivesExitCode2NamingTheKey) {
       {"bad_overlap_mode", "steps:", "contact: {initial_overlap: squash}\nsteps:", "contact.initial_overlap"},
       {"friction_pair_material", "steps:", "contact: {friction_pairs: [{materials: [steel, copper], mu: 0.2}]}\nsteps:",
        "contact.friction_pairs[0].materials[1]"},
+      {"friction_pair_orthotropy", "steps:", "contact: {friction_pairs: [{materials: [steel, steel], mu: 0.2, orthotropy_ratio: 0}]}\nsteps:",
+       "contact.friction_pairs[0].orthotropy_ratio"},
       {"friction_zone_order", "steps:", "contact: {friction_zones: [{z: [50, 10], mu: 0.2}]}\nsteps:", "contact.friction_zones[0].z"},
       {"friction_zone_material", "steps:", "contact: {friction_zones: [{z: [10, 50], mu: 0.2, materials: [[steel, tin]]}]}\nsteps:",
        "contact.friction_zones[0].materials[0][1]"},

@@ -19,7 +19,10 @@ void ContactSettings::validate() const {
   require_positive(normal_multiplier, "normal_multiplier");
   require_positive(tangential_multiplier, "tangential_multiplier");
   require_friction(friction, "friction");
-  for (const auto& p : pair_friction) require_friction(p.coefficient, "friction_pairs[].mu");
+  for (const auto& p : pair_friction) {
+    require_friction(p.coefficient, "friction_pairs[].mu");
+    if (!(p.orthotropy_ratio >= 0)) throw std::invalid_argument("contact.friction_pairs[].orthotropy_ratio must be > 0 (0: the contact's orthotropy_ratio)");
+  }
   for (const auto& z : zone_friction) {
     require_friction(z.coefficient, "friction_zones[].mu");
     if (!(z.z_max > z.z_min)) throw std::invalid_argument("contact.friction_zones[].z must be [z_min, z_max] with z_max > z_min");
@@ -55,6 +58,12 @@ double ContactSettings::friction_at(const std::string& material_a, const std::st
   for (const MaterialPairFriction& p : pair_friction)
     if (same_pair(p.material_a, p.material_b, material_a, material_b)) return p.coefficient;
   return friction;
+}
+
+double ContactSettings::orthotropy_at(const std::string& material_a, const std::string& material_b) const {
+  for (const MaterialPairFriction& p : pair_friction)
+    if (same_pair(p.material_a, p.material_b, material_a, material_b) && p.orthotropy_ratio > 0) return p.orthotropy_ratio;
+  return orthotropy_ratio;
 }
 
 PenaltyStiffness penalty_stiffness(const ContactSettings& s, bool line_contact, double youngs_modulus, double diameter,

@@ -13,6 +13,9 @@ namespace strandfem {
 struct MaterialPairFriction {
   std::string material_a, material_b;
   double coefficient = 0;
+  // mu2 / mu1 for this pair; 0: the contact's orthotropy_ratio. The paper's Fig. 19 makes the aluminum contacts
+  // orthotropic and keeps steel-steel and steel-aluminum at their isotropic 0.3 and 0.5.
+  double orthotropy_ratio = 0;
 };
 
 // Friction coefficient on an axial band z_min <= z <= z_max (multi-level model, paper section 5.2).
@@ -80,6 +83,8 @@ struct ContactSettings {
   void validate() const;
   // Coefficient for the materials of the two wires at axial position z.
   double friction_at(const std::string& material_a, const std::string& material_b, double z) const;
+  // mu2 / mu1 for a pair of materials: its friction_pairs entry's ratio if it sets one, else orthotropy_ratio.
+  double orthotropy_at(const std::string& material_a, const std::string& material_b) const;
 };
 
 // Penalty stiffnesses of a contact point (eqs. 2.5-2.6).

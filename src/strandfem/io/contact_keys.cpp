@@ -40,11 +40,12 @@ ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Nod
     if (!pairs.IsSequence()) reader.fail(pairs, "contact.friction_pairs", "expected a list of {materials: [a, b], mu}");
     for (std::size_t i = 0; i < pairs.size(); ++i) {
       const std::string path = at("contact.friction_pairs", i);
-      reader.check_keys(pairs[i], path, {"materials", "mu"});
+      reader.check_keys(pairs[i], path, {"materials", "mu", "orthotropy_ratio"});
       MaterialPairFriction f;
       std::tie(f.material_a, f.material_b) =
           material_pair(reader, reader.require(pairs[i], path, "materials"), path + ".materials", materials, "expected two material names");
       f.coefficient = friction(reader.require(pairs[i], path, "mu"), path + ".mu");
+      if (pairs[i]["orthotropy_ratio"]) f.orthotropy_ratio = reader.positive(pairs[i]["orthotropy_ratio"], path + ".orthotropy_ratio", "-");
       c.pair_friction.push_back(f);
     }
   }

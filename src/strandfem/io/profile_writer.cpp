@@ -34,7 +34,7 @@ void ProfileWriter::on_increment(const StaticAnalysis& analysis, const Increment
   const Model& model = analysis.model();
   const bool ramp_end = report.step_fraction >= 1.0 - 1e-12;
   const bool loading = report.origin.cycle > 0 && !report.origin.returning;
-  if (loading) tracker_.observe(contact_statuses(model, analysis.model_state()));
+  if (loading) tracker_.observe(contact_statuses(analysis.model_state()));
   if (loading && ramp_end) {
     write(tracker_.at_peak(report.origin.cycle, take_strand_snapshot(model, analysis.model_state())));
   } else if (ramp_end) {

@@ -51,7 +51,7 @@ StrandSnapshot take_strand_snapshot(const Model& model, const ModelState& model_
   return s;
 }
 
-std::vector<int> contact_statuses(const Model& model, const ModelState& model_state) {
+std::vector<int> contact_statuses(const ModelState& model_state) {
   std::vector<int> out;
   out.reserve(model_state.contacts.responses().size());
   for (const ContactResponse& r : model_state.contacts.responses()) out.push_back(static_cast<int>(r.status));

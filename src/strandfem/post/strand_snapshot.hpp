@@ -41,6 +41,6 @@ struct StrandSnapshot {
 StrandSnapshot take_strand_snapshot(const Model& model, const ModelState& model_state);
 
 // Statuses of the contact points now (ContactStatus as int), in point order.
-std::vector<int> contact_statuses(const Model& model, const ModelState& model_state);
+std::vector<int> contact_statuses(const ModelState& model_state);
 
 }  // namespace strandfem
