@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Plots the cases of a `strandfem sweep` folder on one figure, sweep.png:
 
-- bending cases (a transverse load in history.csv): midspan load V against midspan deflection, every cycle;
+- bending cases (a transverse load in history.csv): midspan load V against midspan deflection, every cycle, with
+  eq. 3.1's EImax and EImin lines up to the peak load (from the first variant's summary.json that has a loop);
 - axial cases: axial force against axial strain.
 
 One curve per row of sweep.csv (its variant name in the legend); a variant without results is left out.
@@ -9,6 +10,7 @@ One curve per row of sweep.csv (its variant name in the legend); a variant witho
 Usage: scripts/plot_sweep.py SWEEP_FOLDER
 """
 import csv
+import json
 import os
 import sys
 
@@ -16,6 +18,21 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
+
+
+def draw_eq31_bounds(ax, folder, variants):
+    """Eq. 3.1's straight lines for EImax and EImin up to the first variant's peak load (summary.json), when known."""
+    for v in variants:
+        path = os.path.join(folder, v["results"], "summary.json")
+        if not os.path.exists(path):
+            continue
+        loops = json.load(open(path)).get("bending", {}).get("loops", [])
+        if not loops:
+            continue
+        loop = loops[0]
+        for key, name, style in (("eq31_ei_max_mm", "EImax (eq. 3.1)", "--"), ("eq31_ei_min_mm", "EImin (eq. 3.1)", ":")):
+            ax.plot([0, loop[key]], [0, loop["peak_load_N"]], style, color="gray", linewidth=1, label=name)
+        return
 
 
 def main(folder):
@@ -45,6 +62,7 @@ def main(folder):
             y = [0.0] + [float(r["axial_force_N"]) / 1000 for r in rows]
         ax.plot(x, y, marker=".", markersize=3, linewidth=1, label=name)
     if bending:
+        draw_eq31_bounds(ax, folder, variants)
         ax.set_xlabel("midspan deflection from the start of bending (mm)")
         ax.set_ylabel("transverse load V (N)")
     else:
