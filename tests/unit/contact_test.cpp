@@ -446,7 +446,7 @@ TEST(ContactSet, PatternHoldsOnlyPairsThatAreClosedOrNearlySo) {
   std::vector<NodeState> state = reference_state(mesh);
   for (std::size_t n = 0; n < state.size(); ++n)
     if (mesh.nodes[n].wire == 1) state[n].position.x() -= 0.31;  // pressed 0.01 mm into the master
-  contacts.begin_increment();
+  contacts.begin_increment(true);
   contacts.evaluate(mesh, state, false);
   contacts.accept_iterate(mesh);
   EXPECT_TRUE(contacts.element_pairs_grew());
@@ -483,7 +483,7 @@ TEST(ContactSet, PatternKeepsAFewStalePairsUntilTheyAreAQuarterOfIt) {
   // The last slave element lifts off: its pairs are stale but stay.
   EXPECT_FALSE(contacts.commit(mesh, pressed_below(85)));
   EXPECT_EQ(contacts.element_pairs(), all);
-  contacts.begin_increment();
+  contacts.begin_increment(true);
   contacts.evaluate(mesh, pressed_below(1e3), false);
   contacts.accept_iterate(mesh);
   EXPECT_FALSE(contacts.element_pairs_grew());  // closing again on pairs the pattern kept
@@ -607,7 +607,7 @@ TEST(ContactSet, CrossingPastAWiresEndOpens) {
       if (mesh.nodes[n].wire == 1) state[n].position = Vec3(x, mesh.nodes[n].reference.position.y(), z);
   };
   contacts.commit(mesh, state);
-  contacts.begin_increment();
+  contacts.begin_increment(true);
   contacts.evaluate(mesh, state, false);
   contacts.accept_iterate(mesh);  // the crossing is active
   ASSERT_EQ(contacts.responses()[crossing].status, ContactStatus::kStick);
@@ -645,7 +645,7 @@ TEST(ContactSet, FrictionHoldsAPointFromTheIncrementItClosesIn) {
   std::vector<NodeState> state = reference_state(mesh);
   contacts.commit(mesh, state);
   ASSERT_EQ(contacts.responses()[crossing].status, ContactStatus::kOpen);
-  contacts.begin_increment();
+  contacts.begin_increment(true);
   for (std::size_t n = 0; n < state.size(); ++n)
     if (mesh.nodes[n].wire == 1) state[n].position += Vec3(0.1, 0.0, 0.2);
   contacts.evaluate(mesh, state, false);
@@ -665,6 +665,46 @@ TEST(ContactSet, FrictionHoldsAPointFromTheIncrementItClosesIn) {
   EXPECT_NEAR(p.history.slip, 0.2 - p.allowed_slip, 1e-9);
   EXPECT_NEAR(p.history.dissipated_energy, 0.3 * normal_force * (0.2 - p.allowed_slip), 1e-9 * normal_force);
   EXPECT_DOUBLE_EQ(contacts.dissipated_energy(), p.history.dissipated_energy);
+}
+
+// While the loading goes on, points that slipped start an increment holding their slip; where it turns (V back
+// after V out) they start free, so that the plain law sticks them as they unload (docs/theory.md, "Newton with
+// contact"). The crossing of the test above, slid 0.2 mm and committed, is moved back by a tenth of its elastic slip.
+TEST(ContactSet, SlippingPointsStartFreeWhereTheLoadingTurns) {
+  Mesh mesh = v_wire_mesh(0.0);
+  mesh.add_line("across", 2, 0, 0, 2, [](double t) { return std::make_pair(Vec3(-1.95, 20.0 * t - 10.0, 5.0), Mat3::Identity()); });
+  ContactSettings settings = enabled_contact();
+  settings.friction = 0.3;
+  settings.initial_overlap = InitialOverlap::kKeep;
+  ContactSet contacts;
+  contacts.initialize(mesh, settings);
+  const std::size_t crossing = crossing_index(contacts);
+  std::vector<NodeState> state = reference_state(mesh);
+  contacts.commit(mesh, state);
+  contacts.begin_increment(true);
+  auto slide = [&](double dz) {
+    for (std::size_t n = 0; n < state.size(); ++n)
+      if (mesh.nodes[n].wire == 1) state[n].position.z() += dz;
+  };
+  slide(0.2);
+  contacts.evaluate(mesh, state, false);
+  ASSERT_EQ(contacts.responses()[crossing].status, ContactStatus::kSlip);
+  contacts.commit(mesh, state);
+  const ContactPoint& p = contacts.points()[crossing];
+  ASSERT_TRUE(p.history.slipping);
+  slide(-0.1 * p.allowed_slip);
+  contacts.begin_increment(true);  // loading goes on: held in its slip, it slides on at the cone
+  EXPECT_EQ(p.friction_mode, FrictionMode::kHeldSlip);
+  contacts.evaluate(mesh, state, false);
+  EXPECT_EQ(contacts.responses()[crossing].status, ContactStatus::kSlip);
+  contacts.begin_increment(false);  // the loading turns: free, the plain law sticks it
+  EXPECT_EQ(p.friction_mode, FrictionMode::kFree);
+  contacts.evaluate(mesh, state, false);
+  const ContactResponse& r = contacts.responses()[crossing];
+  EXPECT_EQ(r.status, ContactStatus::kStick);
+  EXPECT_NEAR(r.friction.norm(), 0.9 * 0.3 * r.normal_force, 1e-6 * r.normal_force);  // 0.9 of the cone
+  contacts.accept_iterate(mesh);
+  EXPECT_EQ(p.friction_mode, FrictionMode::kHeldStick);
 }
 
 TEST(ContactSet, InitialOverlapIsOffset) {

@@ -16,13 +16,15 @@ constexpr int kMaxFrictionSwitches = 6;
 constexpr int kMaxNormalSwitches = 4;              // held friction switches per point and increment
 }  // namespace
 
-void ContactSet::begin_increment() {
+void ContactSet::begin_increment(bool loading_continues) {
   for (ContactPoint& p : points_) {
     p.active = p.history.closed;
     p.normal_switches = 0;
     p.friction_switches = 0;
-    // Loading that goes on in the same sense keeps the slipping points slipping: start from there.
-    p.friction_mode = p.history.closed && p.history.slipping ? FrictionMode::kHeldSlip : FrictionMode::kFree;
+    // Loading that goes on in the same sense keeps the slipping points slipping: start from there. Where it turns
+    // (V back after V out) they stick again; held in their old slip, the first increment of each Cardinal 1 m
+    // reversal failed twice and went on at a quarter of its size (docs/theory.md, "Newton with contact").
+    p.friction_mode = loading_continues && p.history.closed && p.history.slipping ? FrictionMode::kHeldSlip : FrictionMode::kFree;
     const Vec3 d = -p.history.slip_direction;  // friction opposes the slip
     p.slip_direction = {d.x(), d.y(), d.z()};
   }

@@ -43,7 +43,7 @@ class ContactSet final : public Interaction {
   // accepted iterate: closed points become active and hold their stick/slip state; release_tensile, once
   // Newton has converged: releases points in tension and switches held friction states that the trial
   // force contradicts; returns how many changed (0: the increment has converged).
-  void begin_increment() override;
+  void begin_increment(bool loading_continues) override;
   void accept_iterate(const Mesh& mesh) override;
   bool element_pairs_grew() override {
     const bool grew = pairs_grew_;

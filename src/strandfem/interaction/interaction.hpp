@@ -30,8 +30,9 @@ class Interaction {
   virtual ~Interaction() = default;
   // Mesh element pairs whose nodes it may couple (the tangent's sparsity pattern).
   virtual const std::vector<std::pair<int, int>>& element_pairs() const = 0;
-  // Start of an increment from the last converged state.
-  virtual void begin_increment() = 0;
+  // Start of an increment from the last converged state. loading_continues: the loads change the way they did in
+  // the last converged increment (false at a step that reverses or changes them, e.g. V back after V out).
+  virtual void begin_increment(bool loading_continues) = 0;
   // Evaluates every contribution at `state` from the converged history (writes no history).
   virtual void evaluate(const Mesh& mesh, const std::vector<NodeState>& state, bool with_tangent) = 0;
   // The contributions of the last evaluation (only the active ones).

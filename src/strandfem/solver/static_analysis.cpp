@@ -149,7 +149,7 @@ void StaticAnalysis::extrapolate_free_motion(double factor) {
   }
 }
 
-bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation, bool idle_step,
+bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation, bool idle_step, bool loading_continues,
                                      const std::map<ActionKey, std::pair<double, double>>& ramps,
                                      IncrementReport& report,
                                      const std::function<void(const IncrementReport&)>& on_progress) {
@@ -170,7 +170,7 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
     else s.rotation = (quaternion_from_rotation_vector(delta * Vec3::Unit(key.component - 3)) * s.rotation).normalized();
   }
   update_slaves();
-  for (Interaction* interaction : model_state_.interactions()) interaction->begin_increment();
+  for (Interaction* interaction : model_state_.interactions()) interaction->begin_increment(loading_continues);
   const int n = dofs_.equation_count;
   std::vector<double> rhs(n);
   double increment_displacement2 = 0;
@@ -417,7 +417,9 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
       plain_retry = false;
       // Ramped off: the factor falls linearly from its full value at the step's start to zero at its end.
       stabilization_factor_ = model_.options.stabilization * (model_.options.stabilization_ramp_off ? 1.0 - p.fraction : 1.0);
-      if (solve_increment(target, extrapolation, idle_step, ramps, report, on_progress)) {
+      // The first increment of a ramp that does not go on loading the way the last one did (p.last_size is then 0).
+      const bool loading_continues = p.converged_increments > 0 || p.last_size > 0;
+      if (solve_increment(target, extrapolation, idle_step, loading_continues, ramps, report, on_progress)) {
         if (retrying_plain) p.extrapolation_failed = true;
         if (report.force_only) ++statistics_.force_only_acceptances;
         for (BeamElementState& e : model_state_.elements) e.commit();

@@ -109,7 +109,7 @@ class StaticAnalysis {
     double previous_last_size = 0;                // that ramp's last converged increment (its fraction units)
   };
   void end_step(const std::map<ActionKey, std::pair<double, double>>& ramps);
-  bool solve_increment(double step_fraction, double extrapolation, bool idle_step,
+  bool solve_increment(double step_fraction, double extrapolation, bool idle_step, bool loading_continues,
                        const std::map<ActionKey, std::pair<double, double>>& ramps, IncrementReport& report,
                        const std::function<void(const IncrementReport&)>& on_progress);
   void update_slaves();
