@@ -21,7 +21,7 @@ void ContactSettings::validate() const {
   require_friction(friction, "friction");
   for (const auto& p : pair_friction) {
     require_friction(p.coefficient, "friction_pairs[].mu");
-    if (!(p.orthotropy_ratio >= 0)) throw std::invalid_argument("contact.friction_pairs[].orthotropy_ratio must be > 0 (0: the contact's orthotropy_ratio)");
+    if (p.orthotropy_ratio) require_positive(*p.orthotropy_ratio, "friction_pairs[].orthotropy_ratio");
   }
   for (const auto& z : zone_friction) {
     require_friction(z.coefficient, "friction_zones[].mu");
@@ -62,7 +62,7 @@ double ContactSettings::friction_at(const std::string& material_a, const std::st
 
 double ContactSettings::orthotropy_at(const std::string& material_a, const std::string& material_b) const {
   for (const MaterialPairFriction& p : pair_friction)
-    if (same_pair(p.material_a, p.material_b, material_a, material_b) && p.orthotropy_ratio > 0) return p.orthotropy_ratio;
+    if (same_pair(p.material_a, p.material_b, material_a, material_b)) return p.orthotropy_ratio.value_or(orthotropy_ratio);
   return orthotropy_ratio;
 }
 

@@ -1,6 +1,7 @@
 // Contact options: penalty factors (paper eqs. 2.5-2.6), friction per material pair and axial zone, search.
 #pragma once
 #include <array>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -13,9 +14,9 @@ namespace strandfem {
 struct MaterialPairFriction {
   std::string material_a, material_b;
   double coefficient = 0;
-  // mu2 / mu1 for this pair; 0: the contact's orthotropy_ratio. The paper's Fig. 19 makes the aluminum contacts
+  // mu2 / mu1 for this pair; none: the contact's orthotropy_ratio. The paper's Fig. 19 makes the aluminum contacts
   // orthotropic and keeps steel-steel and steel-aluminum at their isotropic 0.3 and 0.5.
-  double orthotropy_ratio = 0;
+  std::optional<double> orthotropy_ratio;
 };
 
 // Friction coefficient on an axial band z_min <= z <= z_max (multi-level model, paper section 5.2).

@@ -417,8 +417,9 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
       plain_retry = false;
       // Ramped off: the factor falls linearly from its full value at the step's start to zero at its end.
       stabilization_factor_ = model_.options.stabilization * (model_.options.stabilization_ramp_off ? 1.0 - p.fraction : 1.0);
-      // The first increment of a ramp that does not go on loading the way the last one did (p.last_size is then 0).
-      const bool loading_continues = p.converged_increments > 0 || p.last_size > 0;
+      // Within a ramp, or across ramps that load the same way, there is a last increment to continue from; the first
+      // increment of a ramp that turns the loading has none (p.last_size 0).
+      const bool loading_continues = p.last_size > 0;
       if (solve_increment(target, extrapolation, idle_step, loading_continues, ramps, report, on_progress)) {
         if (retrying_plain) p.extrapolation_failed = true;
         if (report.force_only) ++statistics_.force_only_acceptances;
