@@ -26,6 +26,16 @@ constexpr int kDivergenceCheckAfter = 8;
 // penalties are far stiffer than EA / h); a real unbalance of 1.5e-8 EA is a strain of 1.5e-8 (docs/theory.md).
 constexpr double kRoundoffFraction = 1.5e-8;
 
+// Squared motion of every node from `from` to `to`, rotations weighted by the length scale.
+double motion2(const std::vector<NodeState>& to, const std::vector<NodeState>& from, double length_scale) {
+  double total = 0;
+  for (std::size_t node = 0; node < to.size(); ++node) {
+    const Vec3 rotation = rotation_vector_from_quaternion(to[node].rotation * from[node].rotation.conjugate());
+    total += (to[node].position - from[node].position).squaredNorm() + length_scale * length_scale * rotation.squaredNorm();
+  }
+  return total;
+}
+
 // Adds the wall time of its scope to a total.
 class Timer {
  public:
@@ -37,6 +47,12 @@ class Timer {
   std::chrono::steady_clock::time_point start_;
 };
 }  // namespace
+
+double cut_increment_motion_floor2(double last_motion2, double last_size, double size, double nominal) {
+  if (!(last_size > 0) || size >= nominal * (1.0 - 1e-9)) return 0.0;
+  const double scale = nominal / last_size;
+  return last_motion2 * scale * scale;
+}
 
 StaticAnalysis::StaticAnalysis(Model& model) : model_(model) {
   model_.options.validate();
@@ -150,7 +166,7 @@ void StaticAnalysis::extrapolate_free_motion(double factor) {
 }
 
 bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation, bool idle_step, bool loading_continues,
-                                     const std::map<ActionKey, std::pair<double, double>>& ramps,
+                                     double motion_floor2, const std::map<ActionKey, std::pair<double, double>>& ramps,
                                      IncrementReport& report,
                                      const std::function<void(const IncrementReport&)>& on_progress) {
   const SolverOptions& opt = model_.options;
@@ -345,12 +361,7 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
     accept_iterate();
     // A correction longer than the model itself is divergence, not progress: cut back at once.
     if (last_correction2_ > model_extent2_) return false;
-    increment_displacement2 = 0;
-    for (std::size_t node = 0; node < node_count; ++node) {
-      const Vec3 rotation = rotation_vector_from_quaternion(state_[node].rotation * committed_state_[node].rotation.conjugate());
-      increment_displacement2 += (state_[node].position - committed_state_[node].position).squaredNorm() +
-                                 length_scale_ * length_scale_ * rotation.squaredNorm();
-    }
+    increment_displacement2 = std::max(motion2(state_, committed_state_, length_scale_), motion_floor2);
     report.correction_ratio = increment_displacement2 > 0 ? std::sqrt(last_correction2_ / increment_displacement2) : 0.0;
   }
 }
@@ -420,7 +431,16 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
       // Within a ramp, or across ramps that load the same way, there is a last increment to continue from; the first
       // increment of a ramp that turns the loading has none (p.last_size 0).
       const bool loading_continues = p.last_size > 0;
-      if (solve_increment(target, extrapolation, idle_step, loading_continues, ramps, report, on_progress)) {
+      // A cut increment's corrections are measured against the motion a nominal increment would have (the last
+      // converged one's, scaled to the nominal size), not against its own: halving an increment must not tighten the
+      // displacement test in absolute terms, or contact chatter of a fixed size (stick/slip, the normal band) keeps
+      // cut increments from converging at all (docs/theory.md, "Displacement test of a cut increment").
+      const double motion_floor2 =
+          loading_continues && !previous_committed_state_.empty()
+              ? cut_increment_motion_floor2(motion2(committed_state_, previous_committed_state_, length_scale_), p.last_size,
+                                            target - p.fraction, nominal)
+              : 0.0;
+      if (solve_increment(target, extrapolation, idle_step, loading_continues, motion_floor2, ramps, report, on_progress)) {
         if (retrying_plain) p.extrapolation_failed = true;
         if (report.force_only) ++statistics_.force_only_acceptances;
         for (BeamElementState& e : model_state_.elements) e.commit();

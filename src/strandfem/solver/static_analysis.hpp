@@ -57,6 +57,12 @@ struct AnalysisStatus {
   std::string message;
 };
 
+// Squared motion below which the displacement test of an increment does not measure its corrections: for an
+// increment smaller than the nominal one (after cut-backs) in a ramp that goes on loading, the motion of the last
+// converged increment (last_motion2, of size last_size) scaled to the nominal size; otherwise 0. Sizes are fractions
+// of the ramp; last_size 0 means there is no last increment to go by (a ramp's first, or one that turns the loading).
+double cut_increment_motion_floor2(double last_motion2, double last_size, double size, double nominal);
+
 class StaticAnalysis {
  public:
   explicit StaticAnalysis(Model& model);
@@ -109,8 +115,10 @@ class StaticAnalysis {
     double previous_last_size = 0;                // that ramp's last converged increment (its fraction units)
   };
   void end_step(const std::map<ActionKey, std::pair<double, double>>& ramps);
+  // motion_floor2: squared motion below which the displacement test does not measure a correction (0: none).
   bool solve_increment(double step_fraction, double extrapolation, bool idle_step, bool loading_continues,
-                       const std::map<ActionKey, std::pair<double, double>>& ramps, IncrementReport& report,
+                       double motion_floor2, const std::map<ActionKey, std::pair<double, double>>& ramps,
+                       IncrementReport& report,
                        const std::function<void(const IncrementReport&)>& on_progress);
   void update_slaves();
   void extrapolate_free_motion(double factor);  // adds factor x (committed - previous committed) on free DOFs
