@@ -1,3 +1,4 @@
+// Newton iterations of a static analysis: one increment at a time, with its linear solves and pattern.
 #include "strandfem/solver/static_analysis.hpp"
 
 #include <omp.h>
@@ -12,7 +13,6 @@ namespace strandfem {
 
 namespace {
 constexpr int kMaxContactRounds = 40;  // contact set changes per increment before a cut-back
-constexpr int kEasyIncrementsBeforeRegrowth = 3;
 constexpr double kPredictorAcceptance = 1e-3;  // of the tolerance, for a predictor taken without correction
 // After this many corrections an iterate within kForceOnlyMargin of the force tolerance is accepted on the force
 // test alone (the paper's criterion, with a tenfold margin; see solve_increment).
@@ -26,16 +26,6 @@ constexpr int kDivergenceCheckAfter = 8;
 // penalties are far stiffer than EA / h); a real unbalance of 1.5e-8 EA is a strain of 1.5e-8 (docs/theory.md).
 constexpr double kRoundoffFraction = 1.5e-8;
 
-// Squared motion of every node from `from` to `to`, rotations weighted by the length scale.
-double motion2(const std::vector<NodeState>& to, const std::vector<NodeState>& from, double length_scale) {
-  double total = 0;
-  for (std::size_t node = 0; node < to.size(); ++node) {
-    const Vec3 rotation = rotation_vector_from_quaternion(to[node].rotation * from[node].rotation.conjugate());
-    total += (to[node].position - from[node].position).squaredNorm() + length_scale * length_scale * rotation.squaredNorm();
-  }
-  return total;
-}
-
 // Adds the wall time of its scope to a total.
 class Timer {
  public:
@@ -47,12 +37,6 @@ class Timer {
   std::chrono::steady_clock::time_point start_;
 };
 }  // namespace
-
-double cut_increment_motion_floor2(double last_motion2, double last_size, double size, double nominal) {
-  if (!(last_size > 0) || size >= nominal * (1.0 - 1e-9)) return 0.0;
-  const double scale = nominal / last_size;
-  return last_motion2 * scale * scale;
-}
 
 StaticAnalysis::StaticAnalysis(Model& model) : model_(model) {
   model_.options.validate();
@@ -143,6 +127,15 @@ void StaticAnalysis::rebuild_pattern() {
   const Timer timer(statistics_.pattern_seconds);
   build_pattern();
   ++statistics_.pattern_rebuilds;
+}
+
+double StaticAnalysis::motion2(const std::vector<NodeState>& to, const std::vector<NodeState>& from) const {
+  double total = 0;
+  for (std::size_t node = 0; node < to.size(); ++node) {
+    const Vec3 rotation = rotation_vector_from_quaternion(to[node].rotation * from[node].rotation.conjugate());
+    total += (to[node].position - from[node].position).squaredNorm() + length_scale_ * length_scale_ * rotation.squaredNorm();
+  }
+  return total;
 }
 
 void StaticAnalysis::update_slaves() {
@@ -361,182 +354,9 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
     accept_iterate();
     // A correction longer than the model itself is divergence, not progress: cut back at once.
     if (last_correction2_ > model_extent2_) return false;
-    increment_displacement2 = std::max(motion2(state_, committed_state_, length_scale_), motion_floor2);
+    increment_displacement2 = std::max(motion2(state_, committed_state_), motion_floor2);
     report.correction_ratio = increment_displacement2 > 0 ? std::sqrt(last_correction2_ / increment_displacement2) : 0.0;
   }
-}
-
-AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementReport&)>& on_increment,
-                                   const std::function<void(const IncrementReport&)>& on_progress) {
-  const std::vector<LoadRamp> protocol = expand_load_steps(model_.steps);
-  Progress& p = progress_;  // a restored checkpoint resumes mid-step, with the sizes it had
-  while (p.ramp < static_cast<int>(protocol.size())) {
-    const LoadRamp& step = protocol[p.ramp];
-    std::map<ActionKey, std::pair<double, double>> ramps;
-    for (const auto& [key, value] : p.totals) ramps[key] = {value, value};
-    for (const NodalAction& a : step.actions) {
-      const ActionKey key{a.node, a.component, a.kind};
-      const double start = p.totals.count(key) ? p.totals[key] : 0.0;
-      ramps[key] = {start, a.value};
-    }
-    const double nominal = 1.0 / std::max(1, step.increments);
-    bool idle_step = true;  // no action changes over the step
-    for (const auto& [key, ramp] : ramps) idle_step = idle_step && ramp.first == ramp.second;
-    if (!p.in_step) {
-      p.in_step = true;
-      p.fraction = 0;
-      p.size = p.largest_size = nominal;
-      p.easy_at_cap = p.converged_increments = 0;
-      p.extrapolation_failed = false;
-      // A step that goes on loading the same way as the previous one (every action changes by the same positive
-      // multiple c of its previous change) extrapolates from that step's last increment, which measures 1/c of it.
-      p.last_size = 0;
-      double c = 0, largest = 0;
-      for (const auto& [key, ramp] : ramps) {
-        const double before = p.previous_change.count(key) ? p.previous_change[key] : 0.0;
-        if (std::abs(before) > largest) largest = std::abs(before), c = (ramp.second - ramp.first) / before;
-      }
-      bool proportional = c > 0;
-      for (const auto& [key, ramp] : ramps) {
-        const double before = p.previous_change.count(key) ? p.previous_change[key] : 0.0, now = ramp.second - ramp.first;
-        if (std::abs(now - c * before) > 1e-9 * (std::abs(now) + std::abs(before))) proportional = false;
-      }
-      if (proportional) p.last_size = p.previous_last_size / c;
-    }
-    int cutbacks = 0;
-    bool plain_retry = false;  // the next attempt repeats a failed extrapolated one without extrapolation
-    while (p.fraction < 1.0 - 1e-12) {
-      // Never past the next point of the nominal grid (k / increments): after cut-backs the increments land on
-      // the load levels the case asked for again.
-      const double next_nominal = nominal * (std::floor(p.fraction / nominal + 1e-9) + 1.0);
-      const double target = std::min({1.0, p.fraction + p.size, next_nominal});
-      IncrementReport report;
-      report.step = p.ramp;
-      report.step_name = step.name;
-      report.origin = step.origin;
-      report.increment = p.converged_increments + 1;
-      report.step_fraction = target;
-      // Extrapolate within a step or across steps that load the same way (not across a reversal), and not on
-      // the retry of a failed increment: a poor predictor must not cost the whole cut-back sequence. Once a plain
-      // retry has converged where the extrapolated predictor failed, the step goes on without extrapolating: past
-      // a yield knee each extrapolated attempt would otherwise fail again (docs/theory.md).
-      const double extrapolation = model_.options.extrapolate && p.last_size > 0 && cutbacks == 0 && !plain_retry &&
-                                           !p.extrapolation_failed && !idle_step
-                                       ? (target - p.fraction) / p.last_size
-                                       : 0.0;
-      const bool retrying_plain = plain_retry;
-      plain_retry = false;
-      // Ramped off: the factor falls linearly from its full value at the step's start to zero at its end.
-      stabilization_factor_ = model_.options.stabilization * (model_.options.stabilization_ramp_off ? 1.0 - p.fraction : 1.0);
-      // Within a ramp, or across ramps that load the same way, there is a last increment to continue from; the first
-      // increment of a ramp that turns the loading has none (p.last_size 0).
-      const bool loading_continues = p.last_size > 0;
-      // A cut increment's corrections are measured against the motion a nominal increment would have (the last
-      // converged one's, scaled to the nominal size), not against its own: halving an increment must not tighten the
-      // displacement test in absolute terms, or contact chatter of a fixed size (stick/slip, the normal band) keeps
-      // cut increments from converging at all (docs/theory.md, "Displacement test of a cut increment").
-      const double motion_floor2 =
-          loading_continues && !previous_committed_state_.empty()
-              ? cut_increment_motion_floor2(motion2(committed_state_, previous_committed_state_, length_scale_), p.last_size,
-                                            target - p.fraction, nominal)
-              : 0.0;
-      if (solve_increment(target, extrapolation, idle_step, loading_continues, motion_floor2, ramps, report, on_progress)) {
-        if (retrying_plain) p.extrapolation_failed = true;
-        if (report.force_only) ++statistics_.force_only_acceptances;
-        for (BeamElementState& e : model_state_.elements) e.commit();
-        bool pattern_changed = false;
-        for (Interaction* interaction : model_state_.interactions()) pattern_changed |= interaction->commit(model_.mesh, state_);
-        if (pattern_changed) rebuild_pattern();  // element pairs entered or left the pattern
-        add_increment_work();
-        previous_committed_state_ = committed_state_;
-        committed_state_ = state_;
-        committed_motion_ = applied_motion_;
-        p.last_size = target - p.fraction;
-        p.fraction = target;
-        ++p.converged_increments;
-        // Regrow after an easy increment, but not straight back to a size that just failed (each retry that
-        // fails costs a whole failed increment): that cap doubles after kEasyIncrementsBeforeRegrowth easy
-        // increments at it, never beyond the nominal size.
-        // Easy: converged within a quarter of the allowed Newton corrections. Contact rounds do not count (they
-        // re-evaluate the residual only), and elastoplastic strands converge linearly in about 6 corrections
-        // at any increment size (fibres crossing the yield surface), so larger increments cost no more.
-        const bool easy = report.corrections <= std::max(2, model_.options.max_iterations / 4);
-        p.easy_at_cap = easy && p.size >= p.largest_size ? p.easy_at_cap + 1 : 0;
-        if (p.easy_at_cap >= kEasyIncrementsBeforeRegrowth && p.largest_size < nominal) {
-          p.largest_size = std::min(nominal, 2.0 * p.largest_size);
-          p.easy_at_cap = 0;
-        }
-        if (easy) p.size = std::min(p.largest_size, 2.0 * p.size);
-        cutbacks = 0;
-        if (p.fraction >= 1.0 - 1e-12) end_step(ramps);
-        // Last: the callback may save a checkpoint, which must hold the progress as it now stands.
-        if (on_increment) on_increment(report);
-      } else {
-        for (BeamElementState& e : model_state_.elements) e.revert();
-        for (Interaction* interaction : model_state_.interactions()) interaction->revert();
-        state_ = committed_state_;
-        applied_motion_ = committed_motion_;
-        assembler_->assemble(model_, model_state_, state_, internal_forces_, nullptr);
-        // An extrapolated predictor can lead Newton astray where the plain one converges at the same size
-        // (past a yield knee the last increment's motion is a poor guide): retry once without it before cutting.
-        if (report.extrapolated) {
-          plain_retry = true;
-          ++statistics_.plain_retries;
-          continue;
-        }
-        // Also stop when the size falls below what max_cutbacks halvings of the nominal size allow: converging
-        // and failing in turn could otherwise shrink the increments without bound (the load stalls at a limit).
-        const double smallest = nominal * std::ldexp(1.0, -model_.options.max_cutbacks);
-        if (++cutbacks > model_.options.max_cutbacks || 0.5 * p.size < smallest * (1.0 - 1e-9)) {
-          AnalysisStatus status;
-          status.converged = false;
-          status.message = "step '" + step.name + "' (" + std::to_string(p.ramp + 1) + ") did not converge at load fraction " +
-                           std::to_string(target) + " after " + std::to_string(model_.options.max_cutbacks) +
-                           " increment cut-backs or at the smallest increment, 1/2^" + std::to_string(model_.options.max_cutbacks) +
-                           " of the nominal one (last relative residual " + std::to_string(report.residual_norm) + ")";
-          return status;
-        }
-        p.largest_size = std::min(p.largest_size, 0.5 * p.size);
-        p.easy_at_cap = 0;
-        p.size *= 0.5;
-      }
-    }
-    if (p.in_step) end_step(ramps);  // not reached: the last increment closes the step
-  }
-  return {};
-}
-
-void StaticAnalysis::add_increment_work() {
-  energies_.stabilization_energy +=
-      stabilization_.dissipated_energy(model_.elements, state_, committed_state_, stabilization_factor_);
-  // Forces conjugate to the motion: reactions where the DOF is driven or supported, applied loads where it is free.
-  double work = 0;
-  for (std::size_t node = 0; node < state_.size(); ++node) {
-    if (dofs_.tie_of[node] >= 0) continue;
-    const Vec3 displacement = state_[node].position - committed_state_[node].position;
-    const Vec3 rotation = rotation_vector_from_quaternion(state_[node].rotation * committed_state_[node].rotation.conjugate());
-    for (int c = 0; c < 6; ++c) {
-      const std::size_t i = 6 * node + c;
-      const bool free = dofs_.equation[node][c] >= 0;
-      const double before = free ? committed_external_[i] : committed_forces_[i], now = free ? external_[i] : internal_forces_[i];
-      work += 0.5 * (before + now) * (c < 3 ? displacement[c] : rotation[c - 3]);
-    }
-  }
-  energies_.external_work += work;
-  committed_forces_ = internal_forces_;
-  committed_external_ = external_;
-}
-
-void StaticAnalysis::end_step(const std::map<ActionKey, std::pair<double, double>>& ramps) {
-  Progress& p = progress_;
-  p.previous_change.clear();
-  for (const auto& [key, ramp] : ramps) {
-    p.totals[key] = ramp.second;
-    p.previous_change[key] = ramp.second - ramp.first;
-  }
-  p.previous_last_size = p.last_size;
-  p.in_step = false;
-  ++p.ramp;
 }
 
 }  // namespace strandfem

@@ -122,6 +122,8 @@ class StaticAnalysis {
                        const std::function<void(const IncrementReport&)>& on_progress);
   void update_slaves();
   void extrapolate_free_motion(double factor);  // adds factor x (committed - previous committed) on free DOFs
+  // Squared motion of every node from `from` to `to`, rotations weighted by the mean element length.
+  double motion2(const std::vector<NodeState>& to, const std::vector<NodeState>& from) const;
   void analyze();                              // symbolic analysis of the current pattern
   void build_pattern();                        // pattern of the interactions' element pairs, then its analysis
   void rebuild_pattern();                      // build_pattern() because the pairs changed (counted)
