@@ -94,6 +94,13 @@ TEST(Resume, LoopsOfClosedCyclesAreWrittenBeforeTheRunEnds) {
     closed += r.at("returning") == 1 && std::abs(r.at("load_factor") - std::round(r.at("load_factor"))) < 1e-9;
   ASSERT_EQ(closed, 1) << "the stop must fall after the first cycle and before the second closes";
   EXPECT_EQ(read_csv(stopped.output / "results" / "loops.csv").size(), 1u);
+  // summary.json says it stopped, with its 22 increments and the solver's counts so far (for partial benchmarks).
+  const nlohmann::json summary = nlohmann::json::parse(std::ifstream(stopped.output / "results" / "summary.json"));
+  EXPECT_EQ(summary["status"], "stopped");
+  EXPECT_EQ(summary["converged_increments"], 22);
+  EXPECT_GE(summary["solver_statistics"]["newton_iterations"].get<int>(), 22);
+  EXPECT_GT(summary["solver_statistics"]["factorizations"].get<int>(), 0);
+  EXPECT_GT(summary["wall_time_s"].get<double>(), 0.0);
 }
 
 TEST(Resume, RefusesAFolderWithoutCheckpoint) {

@@ -42,6 +42,7 @@ CaseRunResult run_case(CaseDefinition& c, const std::filesystem::path& directory
     } catch (const StopRequested&) {
       result.stopped = true;
       result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      writer.record_stop(analysis, result.wall_seconds);
       return result;
     }
     result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -117,6 +117,45 @@ void ResultWriter::write_summary(const nlohmann::json& summary) const {
   file.commit();
 }
 
+namespace {
+// Counts and times of the analysis so far. After a resume the analysis' own (Newton iterations, assembly, pattern)
+// include the runs before it, the linear solver's (factorizations and their times) this run only.
+nlohmann::json solver_statistics(const StaticAnalysis& analysis) {
+  const AnalysisStatistics& a = analysis.statistics();
+  const LinearSolverStatistics& l = analysis.linear_statistics();
+  return {{"newton_iterations", a.newton_iterations},
+          {"factorizations", l.factorizations},
+          {"krylov_solves", a.krylov_solves},
+          {"krylov_iterations", a.krylov_iterations},
+          {"pattern_rebuilds", a.pattern_rebuilds},
+          {"rejected_extrapolations", a.rejected_extrapolations},
+          {"plain_retries", a.plain_retries},
+          {"double_precision_fallbacks", a.double_precision_fallbacks},
+          {"force_only_acceptances", a.force_only_acceptances},
+          {"assembly_seconds", a.assembly_seconds},
+          {"linear_seconds", a.linear_seconds},
+          {"pattern_seconds", a.pattern_seconds},
+          {"factorization_seconds", l.factorization_seconds},
+          {"solve_seconds", l.solve_seconds},
+          {"analyses", l.analyses},
+          {"ordering", l.ordering},
+          {"factor_entries", l.factor_entries},
+          {"factorization_flops", l.factorization_flops}};
+}
+}  // namespace
+
+void ResultWriter::record_stop(const StaticAnalysis& analysis, double wall_seconds) {
+  nlohmann::json summary = model_info_;
+  summary["status"] = "stopped";
+  summary["message"] = "stopped by --stop-after after its last converged increment; --resume continues";
+  summary["wall_time_s"] = wall_seconds;
+  summary["converged_increments"] = rows_.size();
+  summary["linear_solver"] = analysis.linear_solver_name();
+  summary["solver_statistics"] = solver_statistics(analysis);
+  summary["configuration"] = case_.resolved;
+  write_summary(summary);
+}
+
 void ResultWriter::record_failure(const std::string& status, const std::string& message) noexcept {
   try {
     nlohmann::json summary = model_info_;
@@ -296,26 +335,7 @@ void ResultWriter::finish(const StaticAnalysis& analysis, const AnalysisStatus& 
   summary["wall_time_s"] = wall_seconds;
   summary["converged_increments"] = rows_.size();
   summary["linear_solver"] = analysis.linear_solver_name();
-  const AnalysisStatistics& a = analysis.statistics();
-  const LinearSolverStatistics& l = analysis.linear_statistics();
-  summary["solver_statistics"] = {{"newton_iterations", a.newton_iterations},
-                                  {"factorizations", l.factorizations},
-                                  {"krylov_solves", a.krylov_solves},
-                                  {"krylov_iterations", a.krylov_iterations},
-                                  {"pattern_rebuilds", a.pattern_rebuilds},
-                                  {"rejected_extrapolations", a.rejected_extrapolations},
-                                  {"plain_retries", a.plain_retries},
-                                  {"double_precision_fallbacks", a.double_precision_fallbacks},
-                                  {"force_only_acceptances", a.force_only_acceptances},
-                                  {"assembly_seconds", a.assembly_seconds},
-                                  {"linear_seconds", a.linear_seconds},
-                                  {"pattern_seconds", a.pattern_seconds},
-                                  {"factorization_seconds", l.factorization_seconds},
-                                  {"solve_seconds", l.solve_seconds},
-                                  {"analyses", l.analyses},
-                                  {"ordering", l.ordering},
-                                  {"factor_entries", l.factor_entries},
-                                  {"factorization_flops", l.factorization_flops}};
+  summary["solver_statistics"] = solver_statistics(analysis);
   // Abaqus' check on its stabilization: the energy it dissipates against the work done on the model.
   const EnergyBalance& energy = analysis.energies();
   summary["energy"] = {{"external_work_Nmm", energy.external_work},

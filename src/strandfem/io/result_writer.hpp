@@ -50,6 +50,8 @@ class ResultWriter {
   void on_increment(const StaticAnalysis& analysis, const IncrementReport& report);
   // Final displacements, the last ParaView frame (if not written yet) and summary.json.
   void finish(const StaticAnalysis& analysis, const AnalysisStatus& status, double wall_seconds);
+  // After --stop-after: summary.json says "stopped", with the wall time of this session and the solver statistics.
+  void record_stop(const StaticAnalysis& analysis, double wall_seconds);
   // After an error that ends the run: summary.json with this status and message, if it can still be written.
   void record_failure(const std::string& status, const std::string& message) noexcept;
   const std::vector<HistoryRow>& rows() const { return rows_; }
