@@ -9,6 +9,7 @@
 #include <sstream>
 #include <new>
 #include <omp.h>
+#include <unistd.h>
 
 #include "strandfem/io/case_file.hpp"
 #include "strandfem/core/archive.hpp"
@@ -16,6 +17,7 @@
 #include "strandfem/io/case_variant.hpp"
 #include "strandfem/io/output_file.hpp"
 #include "strandfem/post/model_report.hpp"
+#include "strandfem/solver/blas_kernels.hpp"
 
 #ifndef STRANDFEM_GIT_REVISION
 #define STRANDFEM_GIT_REVISION "unknown"
@@ -158,9 +160,22 @@ int run_sweep(const std::vector<std::string>& cases, const std::string& key, con
   return result;
 }
 
+// OpenBLAS chooses its kernels once, when it loads: to use faster ones than it picked, the program restarts itself
+// once with OPENBLAS_CORETYPE set (which stops a second restart). exec returns only on failure, and the run then
+// goes on with the kernels that loaded.
+void use_faster_blas_kernels(char** argv) {
+  const std::string core = strandfem::preferred_openblas_core(strandfem::blas_core_name(),
+                                                              strandfem::cpu_has_skylakex_instructions(),
+                                                              std::getenv("OPENBLAS_CORETYPE") != nullptr);
+  if (core.empty()) return;
+  setenv("OPENBLAS_CORETYPE", core.c_str(), 1);
+  execv("/proc/self/exe", argv);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  use_faster_blas_kernels(argv);
   CLI::App app{"StrandFEM: finite elements for multilayered helical wire strands"};
   app.require_subcommand(1);
   std::string case_path, output_dir = "results";

@@ -2,6 +2,7 @@
 // real (read back from the solver, not assumed from the request) and report their statistics.
 #include "strandfem/solver/linear_solver.hpp"
 #include "strandfem/solver/krylov.hpp"
+#include "strandfem/solver/blas_kernels.hpp"
 
 #include <gtest/gtest.h>
 
@@ -164,6 +165,19 @@ TEST(LinearSolverTest, StatisticsAccumulateOverRepeatedCalls) {
   EXPECT_EQ(solver->statistics().analyses, 1);
   EXPECT_EQ(solver->statistics().factorizations, 2);
   EXPECT_EQ(solver->statistics().solves, 6);
+}
+
+// OpenBLAS' AVX2 kernels are replaced by its SkylakeX ones only where it took an AVX-512 CPU for Haswell or Zen,
+// and never against a core type the user chose.
+TEST(BlasKernels, SkylakeXKernelsOnlyWhereOpenBlasMissedTheCpusAvx512) {
+  EXPECT_EQ(preferred_openblas_core("Haswell", true, false), "SkylakeX");
+  EXPECT_EQ(preferred_openblas_core("Zen", true, false), "SkylakeX");
+  EXPECT_EQ(preferred_openblas_core("Haswell", false, false), "");   // an AVX2-only CPU: Haswell is right
+  EXPECT_EQ(preferred_openblas_core("Haswell", true, true), "");     // OPENBLAS_CORETYPE set by the user
+  EXPECT_EQ(preferred_openblas_core("SkylakeX", true, false), "");   // recognized already
+  EXPECT_EQ(preferred_openblas_core("SapphireRapids", true, false), "");
+  EXPECT_EQ(preferred_openblas_core("not OpenBLAS", true, false), "");
+  EXPECT_FALSE(blas_core_name().empty());
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <set>
 
 #include "program_runner.hpp"
+#include "strandfem/solver/blas_kernels.hpp"
 
 namespace strandfem::verification {
 namespace {
@@ -124,6 +125,27 @@ TEST(ResultsFolder, SummaryRecordsTheThreadsUsedAndCapsThemAtTheMachine) {
   EXPECT_LT(s2["threads"].get<int>(), 100000);
   const ProgramRun huge = run_case("cases/examples/seven_wire_axial.yaml", "threads_huge", "-t 99999999999");
   EXPECT_EQ(huge.exit_code, 2) << huge.stderr_text;
+}
+
+// The BLAS kernels the factorizations ran on are read back into summary.json. On AVX-512 CPUs that OpenBLAS takes
+// for Haswell or Zen the program restarts itself on the SkylakeX kernels; a core type the user set is kept.
+TEST(ResultsFolder, SummaryRecordsTheBlasKernelsThatRan) {
+  const std::string loaded = blas_core_name();  // this test process, as OpenBLAS chose on its own (or as the user set)
+  const std::string preferred =
+      preferred_openblas_core(loaded, cpu_has_skylakex_instructions(), std::getenv("OPENBLAS_CORETYPE") != nullptr);
+  const ProgramRun run = run_case("cases/examples/seven_wire_axial.yaml", "blas_default", "-t 1");
+  ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
+  const nlohmann::json summary = nlohmann::json::parse(read(run.output / "results" / "summary.json"));
+  EXPECT_EQ(summary["solver_statistics"]["blas_kernels"], preferred.empty() ? loaded : preferred);
+  if (loaded == "not OpenBLAS") return;
+  const char* user_core = std::getenv("OPENBLAS_CORETYPE");
+  const std::string saved = user_core ? user_core : "";
+  setenv("OPENBLAS_CORETYPE", "Haswell", 1);  // every x86-64 OpenBLAS with dynamic kernels has them
+  const ProgramRun chosen = run_case("cases/examples/seven_wire_axial.yaml", "blas_chosen", "-t 1");
+  if (user_core) setenv("OPENBLAS_CORETYPE", saved.c_str(), 1); else unsetenv("OPENBLAS_CORETYPE");
+  ASSERT_EQ(chosen.exit_code, 0) << chosen.stderr_text;
+  const nlohmann::json chosen_summary = nlohmann::json::parse(read(chosen.output / "results" / "summary.json"));
+  EXPECT_EQ(chosen_summary["solver_statistics"]["blas_kernels"], "Haswell");
 }
 
 }  // namespace

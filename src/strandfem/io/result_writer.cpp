@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "strandfem/post/wire_results.hpp"
+#include "strandfem/solver/blas_kernels.hpp"
 
 namespace strandfem {
 namespace {
@@ -139,6 +140,7 @@ nlohmann::json solver_statistics(const StaticAnalysis& analysis) {
           {"solve_seconds", l.solve_seconds},
           {"analyses", l.analyses},
           {"ordering", l.ordering},
+          {"blas_kernels", blas_core_name()},
           {"factor_entries", l.factor_entries},
           {"factorization_flops", l.factorization_flops}};
 }
