@@ -38,6 +38,13 @@ Assembler::Assembler(const Model& model, const ModelState& model_state, const Do
     pattern_.column_start[c + 1] = pattern_.column_start[c] + static_cast<int>(rows.size());
     pattern_.row_index.insert(pattern_.row_index.end(), rows.begin(), rows.end());
   }
+  // Nodes couple as wholes, and equations are numbered node by node: a node's free DOFs are one block.
+  for (std::size_t node = 0; node < dofs.equation.size(); ++node) {
+    const auto& eq = dofs.equation[node];
+    const auto first = std::find_if(eq.begin(), eq.end(), [](int e) { return e >= 0; });
+    if (first != eq.end()) pattern_.block_start.push_back(*first);
+  }
+  pattern_.block_start.push_back(n);
   element_slots_.assign(model.mesh.elements.size() * 324, -1);
   for (std::size_t k = 0; k < model.mesh.elements.size(); ++k) {
     const MeshElement& e = model.mesh.elements[k];
@@ -66,11 +73,23 @@ Assembler::Assembler(const Model& model, const ModelState& model_state, const Do
     const std::array<int, 6> nodes = {a[0], a[1], a[2], b[0], b[1], b[2]};
     if (std::any_of(nodes.begin(), nodes.end(), [&](int n) { return dofs.tie_of[n] >= 0; })) continue;
     contact_pair_[e * element_count + f] = static_cast<int>(contact_slots_.size() / 1296);
-    for (int i = 0; i < 36; ++i)
-      for (int j = 0; j < 36; ++j) {
-        const int row = dofs.equation[nodes[i / 6]][i % 6], col = dofs.equation[nodes[j / 6]][j % 6];
-        contact_slots_.push_back(row >= 0 && col >= 0 ? pattern_.find(row, col) : -1);
+    const std::size_t base = contact_slots_.size();
+    contact_slots_.resize(base + 1296, -1);
+    for (int j = 0; j < 36; ++j) {
+      const int col = dofs.equation[nodes[j / 6]][j % 6];
+      if (col < 0) continue;
+      for (int a = 0; a < 6; ++a) {
+        // A node's rows follow each other in a column: one search per node, then a step per DOF.
+        int slot = -1;
+        for (int c = 0; c < 6; ++c) {
+          const int row = dofs.equation[nodes[a]][c];
+          if (row < 0) continue;
+          const bool next_in_column = slot >= 0 && slot + 1 < pattern_.column_start[col + 1] && pattern_.row_index[slot + 1] == row;
+          slot = next_in_column ? slot + 1 : pattern_.find(row, col);
+          contact_slots_[base + (6 * a + c) * 36 + j] = slot;
+        }
       }
+    }
   }
 }
 

@@ -21,34 +21,54 @@ int SparsePattern::find(int row, int col) const {
 std::vector<int> nested_dissection_ordering(const SparsePattern& pattern) {
   static_assert(sizeof(idx_t) == sizeof(int), "libmetis is expected with 32-bit indices (Debian's IDXTYPEWIDTH 32)");
   const int n = pattern.size;
-  // Adjacency of A + A^T without the diagonal: METIS wants an undirected graph without self-loops.
-  std::vector<std::vector<int>> neighbours(n);
-  for (int col = 0; col < n; ++col)
+  std::vector<int> block_start = pattern.block_start;
+  if (block_start.empty()) {
+    block_start.resize(n + 1);
+    std::iota(block_start.begin(), block_start.end(), 0);
+  }
+  if (block_start.front() != 0 || block_start.back() != n || !std::is_sorted(block_start.begin(), block_start.end()))
+    throw std::invalid_argument("sparse pattern: block starts must rise from 0 to the matrix size");
+  const int blocks = static_cast<int>(block_start.size()) - 1;
+  std::vector<int> block_of(n);
+  for (int b = 0; b < blocks; ++b) std::fill(block_of.begin() + block_start[b], block_of.begin() + block_start[b + 1], b);
+  // Adjacency of A + A^T between blocks, without self-loops: METIS wants an undirected graph. Each block's first
+  // column stands for all of its columns (and, through the symmetrization, its rows).
+  std::vector<std::vector<int>> neighbours(blocks);
+  for (int b = 0; b < blocks; ++b) {
+    if (block_start[b] == block_start[b + 1]) continue;
+    const int col = block_start[b];
     for (int k = pattern.column_start[col]; k < pattern.column_start[col + 1]; ++k) {
-      const int row = pattern.row_index[k];
-      if (row == col) continue;
-      neighbours[row].push_back(col);
-      neighbours[col].push_back(row);
+      const int other = block_of[pattern.row_index[k]];
+      if (other == b) continue;
+      neighbours[b].push_back(other);
+      neighbours[other].push_back(b);
     }
-  std::vector<idx_t> adjacency_start(n + 1, 0), adjacency;
-  for (int i = 0; i < n; ++i) {
-    std::sort(neighbours[i].begin(), neighbours[i].end());
-    neighbours[i].erase(std::unique(neighbours[i].begin(), neighbours[i].end()), neighbours[i].end());
-    adjacency.insert(adjacency.end(), neighbours[i].begin(), neighbours[i].end());
-    adjacency_start[i + 1] = static_cast<idx_t>(adjacency.size());
+  }
+  std::vector<idx_t> adjacency_start(blocks + 1, 0), adjacency, weight(blocks);
+  for (int b = 0; b < blocks; ++b) {
+    std::sort(neighbours[b].begin(), neighbours[b].end());
+    neighbours[b].erase(std::unique(neighbours[b].begin(), neighbours[b].end()), neighbours[b].end());
+    adjacency.insert(adjacency.end(), neighbours[b].begin(), neighbours[b].end());
+    adjacency_start[b + 1] = static_cast<idx_t>(adjacency.size());
+    weight[b] = std::max(1, block_start[b + 1] - block_start[b]);
   }
   std::vector<int> position(n);
   std::iota(position.begin(), position.end(), 0);
-  if (adjacency.empty()) return position;  // diagonal matrix: nothing to order, and METIS rejects empty graphs
-  idx_t vertices = n;
+  if (adjacency.empty()) return position;  // block-diagonal matrix: nothing to order, and METIS rejects empty graphs
+  idx_t vertices = blocks;
   idx_t options[METIS_NOPTIONS];
   METIS_SetDefaultOptions(options);
   options[METIS_OPTION_NUMBERING] = 0;
-  // METIS' perm is the pivot order (perm[k] = variable eliminated k-th); its iperm is the position of each variable.
-  std::vector<idx_t> pivot_order(n);
-  const int status = METIS_NodeND(&vertices, adjacency_start.data(), adjacency.data(), nullptr, options,
-                                  pivot_order.data(), position.data());
+  // METIS' perm is the pivot order (perm[k] = block eliminated k-th); its iperm is not needed.
+  std::vector<idx_t> pivot_order(blocks), block_position(blocks);
+  const int status = METIS_NodeND(&vertices, adjacency_start.data(), adjacency.data(), weight.data(), options,
+                                  pivot_order.data(), block_position.data());
   if (status != METIS_OK) throw LinearSolverError("METIS_NodeND failed, status " + std::to_string(status));
+  int next = 0;
+  for (int k = 0; k < blocks; ++k) {
+    const int b = pivot_order[k];
+    for (int i = block_start[b]; i < block_start[b + 1]; ++i) position[i] = next++;
+  }
   return position;
 }
 

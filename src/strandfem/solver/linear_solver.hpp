@@ -12,6 +12,9 @@ struct SparsePattern {
   int size = 0;
   std::vector<int> column_start;  // size + 1 entries
   std::vector<int> row_index;
+  // Optional: where runs of consecutive equations that share their rows and columns begin (a node's free DOFs),
+  // with `size` last; empty when every equation stands alone. Orderings then work on the graph of the runs.
+  std::vector<int> block_start;
   std::size_t nonzeros() const { return row_index.size(); }
   // Position of (row, col) in the value array, or -1 when outside the pattern.
   int find(int row, int col) const;
@@ -48,7 +51,9 @@ class LinearSolver {
 
 // METIS nested-dissection ordering of the symmetrized pattern A + A^T (diagonal ignored): the returned
 // position[i] is the 0-based place of variable i in the pivot order. Unsymmetric tangents keep a
-// structurally near-symmetric pattern, so ordering A + A^T is what the multifrontal solvers want.
+// structurally near-symmetric pattern, so ordering A + A^T is what the multifrontal solvers want. With
+// block_start, METIS orders the graph of the blocks (each weighted by its size; its first column stands for it)
+// and a block's equations follow each other in the order.
 std::vector<int> nested_dissection_ordering(const SparsePattern& pattern);
 
 // "mumps_single" (single-precision factors; the case default), "mumps" or "umfpack"; throws std::invalid_argument
