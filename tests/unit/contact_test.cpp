@@ -1,6 +1,8 @@
 // Contact kinematics, force law and linearization against finite differences and closed-form limits.
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -491,6 +493,29 @@ TEST(ContactSet, PatternKeepsAFewStalePairsUntilTheyAreAQuarterOfIt) {
   EXPECT_TRUE(contacts.commit(mesh, pressed_below(45)));
   EXPECT_LT(contacts.element_pairs().size(), all.size() * 3 / 4);
   for (const auto& [a, b] : contacts.element_pairs()) EXPECT_TRUE(std::count(all.begin(), all.end(), std::make_pair(a, b)));
+}
+
+// A line contact's points couple their slave element only with the master elements their feet lie on, not with
+// every candidate of the search: the candidates within the search margin overlap the neighbours and only add fill.
+TEST(ContactSet, LinePointsPutOnlyTheMasterElementsOfTheirFeetInThePattern) {
+  const Mesh mesh = parallel_lines(12, 10, 100, 2.3);  // masters 8.33 mm long, slaves 10 mm
+  ContactSet contacts;
+  contacts.initialize(mesh, enabled_contact());
+  std::vector<NodeState> state = reference_state(mesh);
+  for (std::size_t n = 0; n < state.size(); ++n)
+    if (mesh.nodes[n].wire == 1) state[n].position.x() -= 0.31;  // pressed 0.01 mm into the master all along
+  EXPECT_TRUE(contacts.commit(mesh, state));
+  std::set<std::pair<int, int>> expected;
+  for (const ContactPoint& p : contacts.points()) {
+    ASSERT_EQ(p.kind, ContactKind::kLine);
+    const double z = 10.0 * p.element_a + 5.0 * (1.0 + p.xi);  // the point's height on the straight slave
+    const int master = std::min(11, static_cast<int>(z / (100.0 / 12.0)));
+    expected.insert({mesh.wires[1].elements[p.element_a], mesh.wires[0].elements[master]});
+  }
+  const auto& pairs = contacts.element_pairs();
+  const std::set<std::pair<int, int>> in_pattern(pairs.begin(), pairs.end());
+  EXPECT_EQ(in_pattern, expected);
+  EXPECT_EQ(expected.size(), 20u);  // each slave element straddles one end of a master element
 }
 
 // A steel wire (d = 2 mm, layer 1) from z = 0 to 20 in two straight elements meeting at (0, 0, 10): a V in the x-z

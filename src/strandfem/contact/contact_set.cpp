@@ -560,23 +560,18 @@ bool ContactSet::update_pattern_membership(bool may_leave) {
 }
 
 std::vector<std::pair<int, int>> ContactSet::collect_element_pairs(const Mesh& mesh) const {
+  // The element pair each point was committed on and, within an increment, the pair it is evaluated on now (a
+  // crossing moving to the next element, a line point's foot moving to the next master element).
   std::vector<std::pair<int, int>> pairs;
-  std::vector<char> group_in_pattern(groups_.size(), 0);
   for (std::size_t i = 0; i < points_.size(); ++i) {
-    const ContactPoint& p = points_[i];
     if (!in_pattern_[i]) continue;
-    if (p.kind == ContactKind::kLine) {
-      group_in_pattern[p.group] = 1;
-      continue;
-    }
-    pairs.emplace_back(mesh.wires[p.wire_a].elements[p.element_a], mesh.wires[p.wire_b].elements[p.element_b]);
-    // Within an increment a crossing may be evaluated on the next element pair already.
+    const ContactPoint& p = points_[i];
+    const auto& elements_a = mesh.wires[p.wire_a].elements;
+    const auto& elements_b = mesh.wires[p.wire_b].elements;
+    if (p.element_a >= 0 && p.element_b >= 0) pairs.emplace_back(elements_a[p.element_a], elements_b[p.element_b]);
     if (i < responses_.size() && responses_[i].element_a >= 0 && responses_[i].element_b >= 0)
-      pairs.emplace_back(mesh.wires[p.wire_a].elements[responses_[i].element_a], mesh.wires[p.wire_b].elements[responses_[i].element_b]);
+      pairs.emplace_back(elements_a[responses_[i].element_a], elements_b[responses_[i].element_b]);
   }
-  for (std::size_t g = 0; g < groups_.size(); ++g)
-    if (group_in_pattern[g])
-      for (int k : groups_[g].candidates) pairs.emplace_back(groups_[g].slave_element, mesh.wires[groups_[g].wire_b].elements[k]);
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   return pairs;
