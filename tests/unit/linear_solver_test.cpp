@@ -176,6 +176,8 @@ TEST(LinearSolverTest, NestedDissectionKeepsEachBlockTogether) {
   }
   blocked.block_start = {0, 5, 4, blocked.size};
   EXPECT_THROW(nested_dissection_ordering(blocked), std::invalid_argument);
+  blocked.block_start = {0, 3, 3, blocked.size};  // an empty block
+  EXPECT_THROW(nested_dissection_ordering(blocked), std::invalid_argument);
 }
 
 TEST(LinearSolverTest, StatisticsAccumulateOverRepeatedCalls) {

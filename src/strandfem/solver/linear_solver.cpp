@@ -3,6 +3,7 @@
 #include <metis.h>
 
 #include <algorithm>
+#include <functional>
 #include <numeric>
 #include <stdexcept>
 
@@ -26,8 +27,9 @@ std::vector<int> nested_dissection_ordering(const SparsePattern& pattern) {
     block_start.resize(n + 1);
     std::iota(block_start.begin(), block_start.end(), 0);
   }
-  if (block_start.front() != 0 || block_start.back() != n || !std::is_sorted(block_start.begin(), block_start.end()))
-    throw std::invalid_argument("sparse pattern: block starts must rise from 0 to the matrix size");
+  if (block_start.front() != 0 || block_start.back() != n ||
+      std::adjacent_find(block_start.begin(), block_start.end(), std::greater_equal<int>()) != block_start.end())
+    throw std::invalid_argument("sparse pattern: block starts must rise strictly from 0 to the matrix size");
   const int blocks = static_cast<int>(block_start.size()) - 1;
   std::vector<int> block_of(n);
   for (int b = 0; b < blocks; ++b) std::fill(block_of.begin() + block_start[b], block_of.begin() + block_start[b + 1], b);
@@ -35,7 +37,6 @@ std::vector<int> nested_dissection_ordering(const SparsePattern& pattern) {
   // column stands for all of its columns (and, through the symmetrization, its rows).
   std::vector<std::vector<int>> neighbours(blocks);
   for (int b = 0; b < blocks; ++b) {
-    if (block_start[b] == block_start[b + 1]) continue;
     const int col = block_start[b];
     for (int k = pattern.column_start[col]; k < pattern.column_start[col + 1]; ++k) {
       const int other = block_of[pattern.row_index[k]];
@@ -50,7 +51,7 @@ std::vector<int> nested_dissection_ordering(const SparsePattern& pattern) {
     neighbours[b].erase(std::unique(neighbours[b].begin(), neighbours[b].end()), neighbours[b].end());
     adjacency.insert(adjacency.end(), neighbours[b].begin(), neighbours[b].end());
     adjacency_start[b + 1] = static_cast<idx_t>(adjacency.size());
-    weight[b] = std::max(1, block_start[b + 1] - block_start[b]);
+    weight[b] = block_start[b + 1] - block_start[b];
   }
   std::vector<int> position(n);
   std::iota(position.begin(), position.end(), 0);

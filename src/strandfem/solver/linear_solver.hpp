@@ -13,7 +13,8 @@ struct SparsePattern {
   std::vector<int> column_start;  // size + 1 entries
   std::vector<int> row_index;
   // Optional: where runs of consecutive equations that share their rows and columns begin (a node's free DOFs),
-  // with `size` last; empty when every equation stands alone. Orderings then work on the graph of the runs.
+  // strictly rising, with `size` last; empty when every equation stands alone. Orderings then work on the graph
+  // of the runs.
   std::vector<int> block_start;
   std::size_t nonzeros() const { return row_index.size(); }
   // Position of (row, col) in the value array, or -1 when outside the pattern.
