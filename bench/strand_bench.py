@@ -65,9 +65,9 @@ def run(program, case, threads, folder):
     if os.path.exists(summary):
         s = json.load(open(summary)).get("solver_statistics", {})
         row.update({k: s.get(k) for k in ("newton_iterations", "factorizations", "krylov_solves", "krylov_iterations", "pattern_rebuilds", "rejected_extrapolations", "plain_retries", "double_precision_fallbacks", "force_only_acceptances",
-                                          "assembly_seconds", "linear_seconds", "pattern_seconds", "factorization_seconds", "ordering", "blas_kernels",
-                                          "factor_entries", "factorization_flops")})
-        for k in ("assembly_seconds", "linear_seconds", "pattern_seconds", "factorization_seconds"):
+                                          "assembly_seconds", "linear_seconds", "pattern_seconds", "factorization_seconds", "analysis_seconds", "ordering",
+                                          "blas_kernels", "factor_entries", "factorization_flops")})
+        for k in ("assembly_seconds", "linear_seconds", "pattern_seconds", "factorization_seconds", "analysis_seconds"):
             if row.get(k) is not None:
                 row[k] = round(row[k], 1)
         if row.get("newton_iterations"):

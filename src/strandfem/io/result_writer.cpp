@@ -139,6 +139,7 @@ nlohmann::json solver_statistics(const StaticAnalysis& analysis) {
           {"factorization_seconds", l.factorization_seconds},
           {"solve_seconds", l.solve_seconds},
           {"analyses", l.analyses},
+          {"analysis_seconds", l.analysis_seconds},
           {"ordering", l.ordering},
           {"blas_kernels", blas_core_name()},
           {"factor_entries", l.factor_entries},
