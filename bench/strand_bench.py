@@ -67,8 +67,8 @@ def run(program, case, threads, folder):
         row.update({k: s.get(k) for k in ("newton_iterations", "factorizations", "krylov_solves", "krylov_iterations", "pattern_rebuilds", "rejected_extrapolations", "plain_retries", "double_precision_fallbacks", "force_only_acceptances",
                                           "assembly_seconds", "linear_seconds", "pattern_seconds", "factorization_seconds", "analysis_seconds", "ordering",
                                           "blas_kernels", "factor_entries", "factorization_flops")})
-        for k in ("assembly_seconds", "linear_seconds", "pattern_seconds", "factorization_seconds", "analysis_seconds"):
-            if row.get(k) is not None:
+        for k in row:
+            if k.endswith("_seconds") and row[k] is not None:
                 row[k] = round(row[k], 1)
         if row.get("newton_iterations"):
             row["s_per_iteration"] = round(wall / row["newton_iterations"], 2)
