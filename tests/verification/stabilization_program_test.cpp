@@ -7,6 +7,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string>
 #include <nlohmann/json.hpp>
 
 #include "program_runner.hpp"
@@ -42,8 +44,12 @@ TEST(Stabilization, WorkIsThatOfTheReactionsAndWeakDampingBarelyMovesTheCurve) {
   const auto case_file = std::filesystem::path(::testing::TempDir()) / "stabilized_axial_cycles.yaml";
   {
     std::ifstream in(case_path(kCase));
-    std::ofstream out(case_file);
-    out << in.rdbuf() << "\nsolver: {stabilization: " << kFactor << "}\n";
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string solver = "solver: {";  // the case's own solver block gains the factor
+    ASSERT_NE(text.find(solver), std::string::npos);
+    std::string damped_text = text;
+    damped_text.insert(text.find(solver) + solver.size(), "stabilization: " + std::to_string(kFactor) + ", ");
+    std::ofstream(case_file) << damped_text;
   }
   const std::filesystem::path damped_results =
       std::filesystem::path(::testing::TempDir()) / "strandfem_stabilization_damped" / "results";

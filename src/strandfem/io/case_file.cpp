@@ -480,8 +480,8 @@ class CaseParser {
   void parse_solver(const YAML::Node& node) {
     reader_.check_keys(node, "solver", {"force_tolerance", "moment_tolerance", "displacement_tolerance", "max_iterations",
                                         "max_cutbacks", "line_search_cuts", "linear_solver", "threads",
-                                        "krylov_iterations", "refinement_iterations", "krylov_tolerance", "extrapolate", "stabilization",
-                                        "stabilization_ramp_off"});
+                                        "krylov_iterations", "refinement_iterations", "krylov_tolerance", "newton_forcing", "extrapolate",
+                                        "stabilization", "stabilization_ramp_off"});
     SolverOptions& o = out_.model.options;
     if (node["force_tolerance"]) o.force_tolerance = reader_.positive(node["force_tolerance"], "solver.force_tolerance", "-");
     if (node["moment_tolerance"]) o.moment_tolerance = reader_.positive(node["moment_tolerance"], "solver.moment_tolerance", "-");
@@ -495,6 +495,7 @@ class CaseParser {
     if (node["refinement_iterations"])
       o.refinement_iterations = reader_.integer(node["refinement_iterations"], "solver.refinement_iterations", 1, 200);
     if (node["krylov_tolerance"]) o.krylov_tolerance = reader_.positive(node["krylov_tolerance"], "solver.krylov_tolerance", "-");
+    if (node["newton_forcing"]) o.newton_forcing = reader_.number(node["newton_forcing"], "solver.newton_forcing");
     if (node["extrapolate"]) o.extrapolate = reader_.boolean(node["extrapolate"], "solver.extrapolate");
     if (node["stabilization"]) {
       o.stabilization = reader_.number(node["stabilization"], "solver.stabilization");
@@ -588,6 +589,7 @@ CaseDefinition load_case(const std::string& path) {
                           {"krylov_iterations", c.model.options.krylov_iterations},
                           {"refinement_iterations", c.model.options.refinement_iterations},
                           {"krylov_tolerance", c.model.options.krylov_tolerance},
+                          {"newton_forcing", c.model.options.newton_forcing},
                           {"extrapolate", c.model.options.extrapolate},
                           {"stabilization", c.model.options.stabilization},
                           {"stabilization_ramp_off", c.model.options.stabilization_ramp_off},

@@ -18,6 +18,8 @@ void SolverOptions::validate() const {
   if (refinement_iterations < 1 || refinement_iterations > 200)
     throw std::invalid_argument("solver.refinement_iterations must be in 1..200");
   if (!(krylov_tolerance > 0 && krylov_tolerance < 1)) throw std::invalid_argument("solver.krylov_tolerance must be in (0, 1)");
+  if (!(newton_forcing >= 0 && newton_forcing <= 1))
+    throw std::invalid_argument("solver.newton_forcing must be in [0, 1], got " + std::to_string(newton_forcing));
   if (!(stabilization >= 0 && stabilization < 1)) throw std::invalid_argument("solver.stabilization must be in [0, 1), got " + std::to_string(stabilization));
   if (max_cutbacks < 0) throw std::invalid_argument("solver.max_cutbacks must be >= 0");
   if (threads < 0) throw std::invalid_argument("solver.threads must be >= 0");

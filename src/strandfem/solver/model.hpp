@@ -26,6 +26,10 @@ struct SolverOptions {
   // when they do not suffice, the tangent is factored in double precision instead.
   int refinement_iterations = 30;
   double krylov_tolerance = 1e-8;         // relative residual of the linear solve
+  // Inexact Newton: a correction's linear solve may stop at a relative residual of newton_forcing times the
+  // Newton tolerance over the current relative residual (at most kMaxForcing, at least krylov_tolerance), so that
+  // an iterate near convergence is confirmed with older factors; 0: every solve to krylov_tolerance.
+  double newton_forcing = 0.2;
   // Predictor: start each increment of a step (after its first) from the converged state plus the last
   // increment's motion of the free DOFs, scaled to the new size, instead of moving the driven DOFs alone.
   bool extrapolate = true;

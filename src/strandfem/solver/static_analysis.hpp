@@ -125,11 +125,14 @@ class StaticAnalysis {
   // Squared motion of every node from `from` to `to`, rotations weighted by the mean element length.
   double motion2(const std::vector<NodeState>& to, const std::vector<NodeState>& from) const;
   void analyze();                              // symbolic analysis of the current pattern
-  void build_pattern();                        // pattern of the interactions' element pairs, then its analysis
+  void build_pattern();                        // pattern of the interactions' element pairs; its analysis pending
   void rebuild_pattern();                      // build_pattern() because the pairs changed (counted)
-  bool solve_linear(std::vector<double>& rhs);  // rhs in, Newton correction out; false if the solve failed
+  // rhs in, Newton correction out, to a relative linear residual `tolerance`; false if the solve failed.
+  bool solve_linear(std::vector<double>& rhs, double tolerance);
+  // Tolerance of the linear solve of a correction from an iterate with this relative residual (newton_forcing).
+  double linear_tolerance(double relative_residual) const;
   // GMRES on the current tangent preconditioned by the current factors; rhs becomes the solution if it converged.
-  KrylovResult preconditioned_solve(std::vector<double>& rhs, int max_iterations);
+  KrylovResult preconditioned_solve(std::vector<double>& rhs, int max_iterations, double tolerance);
 
   Model& model_;
   ModelState model_state_;
@@ -156,7 +159,8 @@ class StaticAnalysis {
   std::vector<double> committed_external_;  // and of the last converged one
   std::vector<double> committed_forces_;    // internal forces of the last converged state
   EnergyBalance energies_;
-  bool factorization_usable_ = false;  // the last factorization may precondition GMRES on the current pattern
+  bool factorization_usable_ = false;  // the last factorization may precondition GMRES on the current tangent
+  bool analysis_pending_ = true;       // the current pattern is not analyzed yet (done before its first factorization)
   AnalysisStatistics statistics_;
   Progress progress_;
 };
