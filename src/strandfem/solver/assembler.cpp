@@ -8,19 +8,17 @@ namespace strandfem {
 
 Assembler::Assembler(const Model& model, const ModelState& model_state, const DofMap& dofs) : dofs_(dofs) {
   const int n = dofs.equation_count;
-  std::vector<std::vector<int>> rows_of_column(n);
   auto effective_equation = [&](int node, int component) {
     return dofs.equation[dofs.master_of(model, node)][component];
   };
-  // A tied slave's DOFs act on all 6 master DOFs (the lever arm couples rotation into translation).
+  // Couplings are node to node (a tied slave's DOFs act on all 6 of its master's: the lever arm couples rotation
+  // into translation), and equations are numbered node by node, so the pattern is built from the nodes' neighbour
+  // lists: 36 times fewer entries to sort than scalar couplings (a rebuild follows every change of contact pairs).
+  const int node_count = static_cast<int>(dofs.equation.size());
+  std::vector<std::vector<int>> row_nodes(node_count);  // column node -> the nodes it couples with
   auto couple = [&](const std::array<int, 3>& first, const std::array<int, 3>& second) {
     for (int a : first)
-      for (int b : second)
-        for (int i = 0; i < 6; ++i)
-          for (int j = 0; j < 6; ++j) {
-            const int row = effective_equation(a, i), col = effective_equation(b, j);
-            if (row >= 0 && col >= 0) rows_of_column[col].push_back(row);
-          }
+      for (int b : second) row_nodes[dofs.master_of(model, b)].push_back(dofs.master_of(model, a));
   };
   for (const MeshElement& e : model.mesh.elements) couple(e.nodes, e.nodes);
   for (const Interaction* interaction : model_state.interactions())
@@ -31,12 +29,18 @@ Assembler::Assembler(const Model& model, const ModelState& model_state, const Do
     }
   pattern_.size = n;
   pattern_.column_start.assign(n + 1, 0);
-  for (int c = 0; c < n; ++c) {
-    auto& rows = rows_of_column[c];
+  for (int node = 0; node < node_count; ++node) {
+    auto& rows = row_nodes[node];
     std::sort(rows.begin(), rows.end());
     rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
-    pattern_.column_start[c + 1] = pattern_.column_start[c] + static_cast<int>(rows.size());
-    pattern_.row_index.insert(pattern_.row_index.end(), rows.begin(), rows.end());
+    for (int j = 0; j < 6; ++j) {
+      const int col = dofs.equation[node][j];
+      if (col < 0) continue;
+      for (int row_node : rows)
+        for (int i = 0; i < 6; ++i)
+          if (dofs.equation[row_node][i] >= 0) pattern_.row_index.push_back(dofs.equation[row_node][i]);
+      pattern_.column_start[col + 1] = static_cast<int>(pattern_.row_index.size());
+    }
   }
   // Nodes couple as wholes, and equations are numbered node by node: a node's free DOFs are one block.
   for (std::size_t node = 0; node < dofs.equation.size(); ++node) {
