@@ -77,14 +77,36 @@ Vec3 section_direction(const ElementPose<double>& e, double xi, const Vec3& outw
   return Vec3(m[0], m[1], m[2]).normalized();
 }
 
-ContactResponse evaluate_contact(const ContactPoint& point, const ElementPose<double>& a, const ElementPose<double>& b,
-                                 int element_a, int element_b, double xi, double eta, const Vec3& axis, bool with_tangent,
-                                 PinnedParameter pinned) {
-  ContactResponse r;
+void reset_response(ContactResponse& r, int element_a, int element_b, double xi, double eta) {
+  r.status = ContactStatus::kOpen;
   r.element_a = element_a;
   r.element_b = element_b;
   r.xi = xi;
   r.eta = eta;
+  r.gap = 0;
+  r.normal_force = 0;
+  r.normal.setZero();
+  r.position.setZero();
+  r.q1 = r.q2 = 0;
+  r.tangential_gap.setZero();
+  r.slip_ratio = 1;
+  r.friction.setZero();
+  r.trial_friction.setZero();
+  r.force.setZero();
+}
+
+ContactResponse evaluate_contact(const ContactPoint& point, const ElementPose<double>& a, const ElementPose<double>& b,
+                                 int element_a, int element_b, double xi, double eta, const Vec3& axis, bool with_tangent,
+                                 PinnedParameter pinned) {
+  ContactResponse r;
+  evaluate_contact_into(point, a, b, element_a, element_b, xi, eta, axis, with_tangent, pinned, r);
+  return r;
+}
+
+void evaluate_contact_into(const ContactPoint& point, const ElementPose<double>& a, const ElementPose<double>& b,
+                           int element_a, int element_b, double xi, double eta, const Vec3& axis, bool with_tangent,
+                           PinnedParameter pinned, ContactResponse& r) {
+  reset_response(r, element_a, element_b, xi, eta);
   // Stick points in the parameters of the elements evaluated now (may lie slightly outside [-1, 1]).
   StickAnchor anchor;
   anchor.xi = point.kind == ContactKind::kLine ? xi : element_parameter(point.history.stick_a, element_a);
@@ -97,7 +119,7 @@ ContactResponse evaluate_contact(const ContactPoint& point, const ElementPose<do
   r.normal = Vec3(f.normal[0], f.normal[1], f.normal[2]);
   const V3<double> xb = centerline_point(b.x, eta);
   r.position = Vec3(xb[0], xb[1], xb[2]) + point.radius_b * r.normal;
-  if (f.status == ContactStatus::kOpen) return r;
+  if (f.status == ContactStatus::kOpen) return;
   r.normal_force = f.normal_force;
   r.q1 = f.q1;
   r.q2 = f.q2;
@@ -107,16 +129,16 @@ ContactResponse evaluate_contact(const ContactPoint& point, const ElementPose<do
   r.trial_friction = Vec3(f.trial_friction[0], f.trial_friction[1], f.trial_friction[2]);
   for (int i = 0; i < 12; ++i)
     for (int c = 0; c < 3; ++c) r.force[3 * i + c] = f.nodal[i][c];
-  if (!with_tangent) return r;
+  if (!with_tangent) return;
   // Rotations enter only through friction (surface stick points, moment arms): without it, translations suffice.
   if (point.history.anchored && point.mu1 > 0) {
     const auto poses = lift_poses<36>(a, b);
     fill_tangent<36>(contact_forces(point, poses[0], poses[1], xi, eta, anchor, axis, pinned), r.tangent);
   } else {
+    r.tangent.setZero();  // the spin columns stay zero
     const auto poses = lift_poses<18>(a, b);
     fill_tangent<18>(contact_forces(point, poses[0], poses[1], xi, eta, anchor, axis, pinned), r.tangent);
   }
-  return r;
 }
 
 }  // namespace strandfem

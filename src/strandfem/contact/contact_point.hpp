@@ -200,6 +200,16 @@ ContactResponse evaluate_contact(const ContactPoint& point, const ElementPose<do
                                  int element_a, int element_b, double xi, double eta, const Vec3& axis, bool with_tangent,
                                  PinnedParameter pinned = PinnedParameter::kNone);
 
+// The same into an existing response: every field is rewritten except the tangent, which is written only when
+// with_tangent and the point is closed (left as it was otherwise: a strand's responses hold some 30 000 tangents
+// of 10 kB, and zeroing and copying them at each evaluation cost more than the contact forces).
+void evaluate_contact_into(const ContactPoint& point, const ElementPose<double>& a, const ElementPose<double>& b,
+                           int element_a, int element_b, double xi, double eta, const Vec3& axis, bool with_tangent,
+                           PinnedParameter pinned, ContactResponse& r);
+
+// An open response at the given parameters: every field but the tangent reset.
+void reset_response(ContactResponse& r, int element_a, int element_b, double xi, double eta);
+
 // Section-fixed unit direction from the centerline at xi to the surface point along `outward` (a unit
 // vector in space): the stick direction of a point that closes or slides there.
 Vec3 section_direction(const ElementPose<double>& e, double xi, const Vec3& outward);

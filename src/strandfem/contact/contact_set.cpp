@@ -387,35 +387,38 @@ double ContactSet::reference_gap(const Mesh& mesh, const ContactPoint& p) const 
   return foot.element >= 0 ? foot.distance - radii : 0.0;
 }
 
-ContactResponse ContactSet::evaluate_point(const Mesh& mesh, const std::vector<NodeState>& state, int index,
-                                           bool with_tangent) const {
+void ContactSet::evaluate_point(const Mesh& mesh, const std::vector<NodeState>& state, int index, bool with_tangent,
+                                ContactResponse& r) const {
   const ContactPoint& p = points_[index];
-  ContactResponse open;
-  open.element_a = p.element_a;
-  open.element_b = p.element_b;
-  open.xi = p.xi;
-  open.eta = p.eta;
-  open.gap = 1e300;
   if (p.kind == ContactKind::kPoint) {
     const CrossingLocation c = locate_crossing(mesh, state, p);
-    if (c.element_a < 0) return open;
-    return evaluate_contact(p, pose(mesh, state, mesh.wires[p.wire_a].elements[c.element_a]),
+    if (c.element_a >= 0) {
+      evaluate_contact_into(p, pose(mesh, state, mesh.wires[p.wire_a].elements[c.element_a]),
                             pose(mesh, state, mesh.wires[p.wire_b].elements[c.element_b]), c.element_a, c.element_b, c.xi,
-                            c.eta, settings_.strand_axis, with_tangent, c.pinned);
+                            c.eta, settings_.strand_axis, with_tangent, c.pinned, r);
+      return;
+    }
+  } else {
+    const LineContactGroup& g = groups_[p.group];
+    const auto a = pose(mesh, state, g.slave_element);
+    const FootPoint foot = project_onto_wire(mesh, state, g, centerline_point(a.x, p.xi), p.element_b, p.eta);
+    if (foot.element >= 0) {
+      const auto b = pose(mesh, state, mesh.wires[g.wire_b].elements[foot.element]);
+      evaluate_contact_into(p, a, b, p.element_a, foot.element, p.xi, foot.eta, settings_.strand_axis, with_tangent,
+                            PinnedParameter::kNone, r);
+      return;
+    }
   }
-  const LineContactGroup& g = groups_[p.group];
-  const auto a = pose(mesh, state, g.slave_element);
-  const FootPoint foot = project_onto_wire(mesh, state, g, centerline_point(a.x, p.xi), p.element_b, p.eta);
-  if (foot.element < 0) return open;
-  const auto b = pose(mesh, state, mesh.wires[g.wire_b].elements[foot.element]);
-  return evaluate_contact(p, a, b, p.element_a, foot.element, p.xi, foot.eta, settings_.strand_axis, with_tangent);
+  // No partner found (a crossing off its elements, a foot past the master wire): open, far apart.
+  reset_response(r, p.element_a, p.element_b, p.xi, p.eta);
+  r.gap = 1e300;
 }
 
 void ContactSet::evaluate(const Mesh& mesh, const std::vector<NodeState>& state, bool with_tangent) {
   responses_.resize(points_.size());
   const int count = static_cast<int>(points_.size());
 #pragma omp parallel for schedule(dynamic, 16)
-  for (int i = 0; i < count; ++i) responses_[i] = evaluate_point(mesh, state, i, with_tangent);
+  for (int i = 0; i < count; ++i) evaluate_point(mesh, state, i, with_tangent, responses_[i]);
 }
 
 void ContactSet::contributions(const Mesh& mesh, std::vector<PairContribution>& out) const {

@@ -85,7 +85,8 @@ class ContactSet final : public Interaction {
   void add_line_points(const Mesh& mesh, int group);
   void add_crossing(const Mesh& mesh, int element_a, int element_b, double xi, double eta);
   void set_point_properties(const Mesh& mesh, ContactPoint& p, const Vec3& reference_position);
-  ContactResponse evaluate_point(const Mesh& mesh, const std::vector<NodeState>& state, int index, bool with_tangent) const;
+  void evaluate_point(const Mesh& mesh, const std::vector<NodeState>& state, int index, bool with_tangent,
+                      ContactResponse& response) const;
   double initial_offset(const Mesh& mesh, const ContactPoint& p) const;
   double reference_gap(const Mesh& mesh, const ContactPoint& p) const;
   std::vector<std::pair<int, int>> collect_element_pairs(const Mesh& mesh) const;
