@@ -35,14 +35,14 @@ struct AnalysisStatistics {
   int newton_iterations = 0;   // tangent assemblies
   int krylov_solves = 0;       // linear solves done by GMRES (older or single-precision factors)
   int krylov_iterations = 0;
-  int pattern_rebuilds = 0;    // tangent patterns rebuilt and analyzed again (interaction pairs changed)
+  int pattern_rebuilds = 0;    // tangent patterns rebuilt (interaction pairs changed); analyzed at their first factorization
   int rejected_extrapolations = 0;  // extrapolated predictors worse than the plain one (not used)
   int force_only_acceptances = 0;  // increments accepted on the force test alone (see IncrementReport::force_only)
   int plain_retries = 0;       // failed extrapolated increments repeated at the same size without extrapolation
   int double_precision_fallbacks = 0;  // single-precision factors that GMRES could not refine: solved in double
   double assembly_seconds = 0; // tangent assembly (elements and interactions) for Newton corrections
   double linear_seconds = 0;   // factorizations, solves and GMRES
-  double pattern_seconds = 0;  // pattern rebuilds: the assembler's pattern, METIS ordering and symbolic analysis
+  double pattern_seconds = 0;  // pattern rebuilds and the symbolic analyses (METIS ordering included) of patterns
 };
 
 // Work done on the strand and energy taken by the viscous stabilization, summed over converged increments.
