@@ -159,7 +159,7 @@ double StaticAnalysis::linear_tolerance(double relative_residual) const {
   // A linear residual of forcing x tolerance leaves the next iterate's residual at about that, as long as the
   // Newton step itself is good: the loose solves are those of iterates already near the tolerance.
   const double forcing = opt.newton_forcing * std::min(opt.force_tolerance, opt.moment_tolerance) / relative_residual;
-  return std::clamp(forcing, opt.krylov_tolerance, kMaxForcing);
+  return std::max(opt.krylov_tolerance, std::min(forcing, kMaxForcing));  // never looser than krylov_tolerance asks
 }
 
 void StaticAnalysis::update_slaves() {
