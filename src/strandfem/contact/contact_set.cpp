@@ -425,7 +425,7 @@ void ContactSet::contributions(const Mesh& mesh, std::vector<PairContribution>& 
   for (std::size_t i = 0; i < responses_.size(); ++i) {
     const ContactResponse& r = responses_[i];
     if (r.status == ContactStatus::kOpen) continue;
-    out.push_back({nodes_of(mesh, static_cast<int>(i)), elements_of(mesh, static_cast<int>(i)), &r.force, &r.tangent});
+    out.push_back({nodes_of(mesh, static_cast<int>(i)), &r.force, &r.tangent});
   }
 }
 

@@ -20,7 +20,6 @@ using PairMatrix = Eigen::Matrix<double, 36, 36>;
 // One evaluated contribution: internal nodal forces of two elements' nodes (a0, a1, a2, b0, b1, b2).
 struct PairContribution {
   std::array<int, 6> nodes{};
-  std::pair<int, int> elements{-1, -1};  // mesh elements (a, b): their nodes' block of the pattern
   const PairVector* force = nullptr;
   const PairMatrix* tangent = nullptr;   // valid when evaluated with the tangent
 };

@@ -8,9 +8,6 @@ namespace strandfem {
 
 Assembler::Assembler(const Model& model, const ModelState& model_state, const DofMap& dofs) : dofs_(dofs) {
   const int n = dofs.equation_count;
-  auto effective_equation = [&](int node, int component) {
-    return dofs.equation[dofs.master_of(model, node)][component];
-  };
   // Couplings are node to node (a tied slave's DOFs act on all 6 of its master's: the lever arm couples rotation
   // into translation), and equations are numbered node by node, so the pattern is built from the nodes' neighbour
   // lists: 36 times fewer entries to sort than scalar couplings (a rebuild follows every change of contact pairs).
@@ -29,10 +26,22 @@ Assembler::Assembler(const Model& model, const ModelState& model_state, const Do
     }
   pattern_.size = n;
   pattern_.column_start.assign(n + 1, 0);
+  node_column_start_.assign(node_count + 1, 0);
   for (int node = 0; node < node_count; ++node) {
     auto& rows = row_nodes[node];
     std::sort(rows.begin(), rows.end());
     rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    // Every column of this node holds the same rows: a row node's place in them is one number per node pair.
+    int offset = 0;
+    for (int row_node : rows) {
+      const auto& eq = dofs.equation[row_node];
+      const auto first = std::find_if(eq.begin(), eq.end(), [](int e) { return e >= 0; });
+      if (first == eq.end()) continue;
+      node_rows_.push_back(row_node);
+      node_row_base_.push_back(offset - *first);
+      offset += static_cast<int>(std::count_if(eq.begin(), eq.end(), [](int e) { return e >= 0; }));
+    }
+    node_column_start_[node + 1] = static_cast<int>(node_rows_.size());
     for (int j = 0; j < 6; ++j) {
       const int col = dofs.equation[node][j];
       if (col < 0) continue;
@@ -49,15 +58,6 @@ Assembler::Assembler(const Model& model, const ModelState& model_state, const Do
     if (first != eq.end()) pattern_.block_start.push_back(*first);
   }
   pattern_.block_start.push_back(n);
-  element_slots_.assign(model.mesh.elements.size() * 324, -1);
-  for (std::size_t k = 0; k < model.mesh.elements.size(); ++k) {
-    const MeshElement& e = model.mesh.elements[k];
-    for (int a = 0; a < 18; ++a)
-      for (int b = 0; b < 18; ++b) {
-        const int row = effective_equation(e.nodes[a / 6], a % 6), col = effective_equation(e.nodes[b / 6], b % 6);
-        if (row >= 0 && col >= 0) element_slots_[k * 324 + a * 18 + b] = pattern_.find(row, col);
-      }
-  }
   for (const RigidTie& tie : model.ties) {
     std::array<int, 9> slots;
     for (int i = 0; i < 3; ++i)
@@ -68,76 +68,62 @@ Assembler::Assembler(const Model& model, const ModelState& model_state, const Do
     tie_slots_.push_back(slots);
   }
   outputs_.resize(model.mesh.elements.size());
-  const std::int64_t element_count = static_cast<std::int64_t>(model.mesh.elements.size());
-  std::vector<std::pair<int, int>> pairs;
-  for (const Interaction* interaction : model_state.interactions())
-    pairs.insert(pairs.end(), interaction->element_pairs().begin(), interaction->element_pairs().end());
-  for (const auto& [e, f] : pairs) {
-    const auto &a = model.mesh.elements[e].nodes, &b = model.mesh.elements[f].nodes;
-    const std::array<int, 6> nodes = {a[0], a[1], a[2], b[0], b[1], b[2]};
-    if (std::any_of(nodes.begin(), nodes.end(), [&](int n) { return dofs.tie_of[n] >= 0; })) continue;
-    contact_pair_[e * element_count + f] = static_cast<int>(contact_slots_.size() / 1296);
-    const std::size_t base = contact_slots_.size();
-    contact_slots_.resize(base + 1296, -1);
-    for (int j = 0; j < 36; ++j) {
-      const int col = dofs.equation[nodes[j / 6]][j % 6];
-      if (col < 0) continue;
-      for (int a = 0; a < 6; ++a) {
-        // A node's rows follow each other in a column: one search per node, then a step per DOF.
-        int slot = -1;
-        for (int c = 0; c < 6; ++c) {
-          const int row = dofs.equation[nodes[a]][c];
-          if (row < 0) continue;
-          const bool next_in_column = slot >= 0 && slot + 1 < pattern_.column_start[col + 1] && pattern_.row_index[slot + 1] == row;
-          slot = next_in_column ? slot + 1 : pattern_.find(row, col);
-          contact_slots_[base + (6 * a + c) * 36 + j] = slot;
-        }
-      }
-    }
-  }
+}
+
+int Assembler::block_base(int row_node, int column_node) const {
+  const auto begin = node_rows_.begin() + node_column_start_[column_node];
+  const auto end = node_rows_.begin() + node_column_start_[column_node + 1];
+  const auto it = std::lower_bound(begin, end, row_node);
+  return (it != end && *it == row_node) ? node_row_base_[it - node_rows_.begin()] : kNoBlock;
 }
 
 template <int Nodes>
 void Assembler::scatter(const Model& model, const std::vector<NodeState>& state, const std::array<int, Nodes>& nodes,
-                        Eigen::Matrix<double, 6 * Nodes, 1> r, Eigen::Matrix<double, 6 * Nodes, 6 * Nodes>* K,
-                        std::vector<double>& nodal_forces, std::vector<double>& slave_forces,
-                        std::vector<double>* values, const int* slots) {
+                        const Eigen::Matrix<double, 6 * Nodes, 1>& force, const Eigen::Matrix<double, 6 * Nodes, 6 * Nodes>* tangent,
+                        std::vector<double>& nodal_forces, std::vector<double>& slave_forces, std::vector<double>* values) {
   constexpr int size = 6 * Nodes;
-  // Move tied nodes' contributions to their masters: r_m = T^T r_s, K_ab = T_a^T K_ab T_b.
-  Eigen::Matrix<double, size, size> transform = Eigen::Matrix<double, size, size>::Identity();
+  std::array<int, Nodes> masters;
   bool any_tied = false;
   for (int a = 0; a < Nodes; ++a) {
-    const int tie = dofs_.tie_of[nodes[a]];
-    if (tie < 0) continue;
-    any_tied = true;
-    for (int c = 0; c < 6; ++c) slave_forces[6 * nodes[a] + c] += r[6 * a + c];
-    const int master = model.ties[tie].master;
-    transform.template block<6, 6>(6 * a, 6 * a) = tie_transform(state[nodes[a]].position - state[master].position);
+    masters[a] = dofs_.master_of(model, nodes[a]);
+    any_tied = any_tied || masters[a] != nodes[a];
   }
+  const Eigen::Matrix<double, size, 1>* r = &force;
+  const Eigen::Matrix<double, size, size>* K = tangent;
+  Eigen::Matrix<double, size, 1> moved_force;
+  Eigen::Matrix<double, size, size> moved_tangent;
   if (any_tied) {
-    r = transform.transpose() * r;
-    if (K) *K = transform.transpose() * (*K) * transform;
-  }
-  for (int a = 0; a < Nodes; ++a) {
-    const int target = dofs_.master_of(model, nodes[a]);
-    for (int c = 0; c < 6; ++c) nodal_forces[6 * target + c] += r[6 * a + c];
-  }
-  if (!K) return;
-  for (int a = 0; a < size; ++a) {
-    const int row = dofs_.equation[dofs_.master_of(model, nodes[a / 6])][a % 6];
-    if (!slots && row < 0) continue;
-    for (int b = 0; b < size; ++b) {
-      int slot;
-      if (slots) {
-        slot = slots[a * size + b];
-      } else {
-        const int col = dofs_.equation[dofs_.master_of(model, nodes[b / 6])][b % 6];
-        if (col < 0 || (*K)(a, b) == 0.0) continue;
-        slot = pattern_.find(row, col);
-      }
-      if (slot >= 0) (*values)[slot] += (*K)(a, b);
+    // Move tied nodes' contributions to their masters: r_m = T^T r_s, K_ab = T_a^T K_ab T_b.
+    Eigen::Matrix<double, size, size> transform = Eigen::Matrix<double, size, size>::Identity();
+    for (int a = 0; a < Nodes; ++a) {
+      if (masters[a] == nodes[a]) continue;
+      for (int c = 0; c < 6; ++c) slave_forces[6 * nodes[a] + c] += force[6 * a + c];
+      transform.template block<6, 6>(6 * a, 6 * a) = tie_transform(state[nodes[a]].position - state[masters[a]].position);
+    }
+    moved_force = transform.transpose() * force;
+    r = &moved_force;
+    if (tangent) {
+      moved_tangent = transform.transpose() * (*tangent) * transform;
+      K = &moved_tangent;
     }
   }
+  for (int a = 0; a < Nodes; ++a)
+    for (int c = 0; c < 6; ++c) nodal_forces[6 * masters[a] + c] += (*r)[6 * a + c];
+  if (!K) return;
+  const std::vector<int>& column_start = pattern_.column_start;
+  for (int b = 0; b < Nodes; ++b)
+    for (int a = 0; a < Nodes; ++a) {
+      // Outside the pattern (an interaction that entered within the iteration): the pattern grows at acceptance.
+      const int base = block_base(masters[a], masters[b]);
+      if (base == kNoBlock) continue;
+      const auto &rows = dofs_.equation[masters[a]], &columns = dofs_.equation[masters[b]];
+      for (int j = 0; j < 6; ++j) {
+        if (columns[j] < 0) continue;
+        double* column = values->data() + column_start[columns[j]] + base;
+        for (int c = 0; c < 6; ++c)
+          if (rows[c] >= 0) column[rows[c]] += (*K)(6 * a + c, 6 * b + j);
+      }
+    }
 }
 
 // Interaction contributions act on their six nodes; sequential, in order (deterministic).
@@ -145,26 +131,10 @@ void Assembler::add_interactions(const Model& model, const ModelState& model_sta
                                  std::vector<double>& nodal_forces, std::vector<double>& slave_forces,
                                  std::vector<double>* values) {
   const bool with_tangent = values != nullptr;
-  const std::int64_t element_count = static_cast<std::int64_t>(model.mesh.elements.size());
   contributions_.clear();
   for (const Interaction* interaction : model_state.interactions()) interaction->contributions(model.mesh, contributions_);
-  for (const PairContribution& c : contributions_) {
-    const auto cached = contact_pair_.find(c.elements.first * element_count + c.elements.second);
-    if (cached != contact_pair_.end()) {
-      for (int a = 0; a < 6; ++a)
-        for (int k = 0; k < 6; ++k) nodal_forces[6 * c.nodes[a] + k] += (*c.force)[6 * a + k];
-      if (with_tangent) {
-        const int* slots = &contact_slots_[static_cast<std::size_t>(cached->second) * 1296];
-        const PairMatrix& K = *c.tangent;
-        for (int a = 0; a < 36; ++a)
-          for (int b = 0; b < 36; ++b)
-            if (slots[36 * a + b] >= 0) (*values)[slots[36 * a + b]] += K(a, b);
-      }
-      continue;
-    }
-    PairMatrix K = with_tangent ? *c.tangent : PairMatrix::Zero();
-    scatter<6>(model, state, c.nodes, *c.force, with_tangent ? &K : nullptr, nodal_forces, slave_forces, values, nullptr);
-  }
+  for (const PairContribution& c : contributions_)
+    scatter<6>(model, state, c.nodes, *c.force, with_tangent ? c.tangent : nullptr, nodal_forces, slave_forces, values);
 }
 
 void Assembler::assemble(const Model& model, ModelState& model_state, const std::vector<NodeState>& state,
@@ -190,12 +160,9 @@ void Assembler::assemble(const Model& model, ModelState& model_state, const std:
   nodal_forces.assign(6 * node_count, 0.0);
   std::vector<double> slave_forces(6 * node_count, 0.0);
   if (with_tangent) values->assign(pattern_.nonzeros(), 0.0);
-  for (int k = 0; k < element_count; ++k) {
-    ElementMatrix K;
-    if (with_tangent) K = outputs_[k].tangent;
-    scatter<3>(model, state, model.elements[k].nodes(), outputs_[k].residual, with_tangent ? &K : nullptr, nodal_forces,
-               slave_forces, values, &element_slots_[static_cast<std::size_t>(k) * 324]);
-  }
+  for (int k = 0; k < element_count; ++k)
+    scatter<3>(model, state, model.elements[k].nodes(), outputs_[k].residual, with_tangent ? &outputs_[k].tangent : nullptr,
+               nodal_forces, slave_forces, values);
   add_interactions(model, model_state, state, nodal_forces, slave_forces, values);
   if (!with_tangent) return;
   // Rotation of the lever arm: d(arm x f)/dtheta_m = f^ arm^ (f: the slave's force, held fixed).

@@ -1,7 +1,6 @@
 // Global assembly of beam and contact contributions into nodal forces and a CSC tangent.
 #pragma once
-#include <cstdint>
-#include <unordered_map>
+#include <limits>
 #include <vector>
 
 #include "strandfem/solver/linear_solver.hpp"
@@ -11,8 +10,8 @@
 
 namespace strandfem {
 
-// Builds the tangent's sparsity pattern once per DOF map and scatters element contributions into value
-// slots (no triplets inside Newton). Element evaluation runs in parallel; the scatter is sequential in
+// Builds the tangent's sparsity pattern once per DOF map and scatters element contributions into it by node
+// blocks (no triplets inside Newton). Element evaluation runs in parallel; the scatter is sequential in
 // element order so the sums, and hence the results, do not depend on the thread count.
 class Assembler {
  public:
@@ -36,17 +35,21 @@ class Assembler {
   // columns to their masters; tied slaves' forces are also collected for the lever-arm term.
   template <int Nodes>
   void scatter(const Model& model, const std::vector<NodeState>& state, const std::array<int, Nodes>& nodes,
-               Eigen::Matrix<double, 6 * Nodes, 1> r, Eigen::Matrix<double, 6 * Nodes, 6 * Nodes>* K,
-               std::vector<double>& nodal_forces, std::vector<double>& slave_forces, std::vector<double>* values,
-               const int* slots);
+               const Eigen::Matrix<double, 6 * Nodes, 1>& force, const Eigen::Matrix<double, 6 * Nodes, 6 * Nodes>* tangent,
+               std::vector<double>& nodal_forces, std::vector<double>& slave_forces, std::vector<double>* values);
+  // Where the block (row node, column node) sits in the tangent: the value of (row, col) is at
+  // column_start[col] + base + row, for every free row of the row node and column of the column node;
+  // kNoBlock when the two nodes are not coupled in the pattern.
+  int block_base(int row_node, int column_node) const;
+  static constexpr int kNoBlock = std::numeric_limits<int>::min();
+
   const DofMap& dofs_;
   SparsePattern pattern_;
-  std::vector<int> element_slots_;               // 324 per element, -1 where row or column is constrained
+  // The pattern by nodes: for each column node, its row nodes (ascending, free DOFs only) and their block bases.
+  std::vector<int> node_column_start_;
+  std::vector<int> node_rows_;
+  std::vector<int> node_row_base_;
   std::vector<std::array<int, 9>> tie_slots_;    // master rotation-rotation slots per tie
-  // Contact element pairs whose six nodes are all untied: 1296 slots each (36 x 36, nodes a0..b2),
-  // found by (slave element, master element); other pairs go through the general scatter.
-  std::unordered_map<std::int64_t, int> contact_pair_;
-  std::vector<int> contact_slots_;
   std::vector<BeamElement::Output> outputs_;
   std::vector<PairContribution> contributions_;
 };
