@@ -34,7 +34,8 @@ constexpr int kExitOutputError = 4;
 constexpr int kExitStopped = 5;
 
 nlohmann::json build_info() {
-  return {{"git_revision", STRANDFEM_GIT_REVISION}, {"compiler", __VERSION__}, {"version", "0.1.0"}};
+  return {{"git_revision", STRANDFEM_GIT_REVISION}, {"compiler", __VERSION__}, {"instruction_set", STRANDFEM_INSTRUCTION_SET},
+          {"version", "0.1.0"}};
 }
 
 // Threads for element evaluation: -t over solver.threads, 0 meaning OpenMP's default. More than the machine's

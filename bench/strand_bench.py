@@ -63,7 +63,9 @@ def run(program, case, threads, folder):
             row["slope_vs_theory_%"] = round(100 * (force / strain / theory - 1), 2)
     summary = os.path.join(out, "summary.json")
     if os.path.exists(summary):
-        s = json.load(open(summary)).get("solver_statistics", {})
+        summary_json = json.load(open(summary))
+        s = summary_json.get("solver_statistics", {})
+        row["instruction_set"] = summary_json.get("build", {}).get("instruction_set")
         row.update({k: s.get(k) for k in ("newton_iterations", "factorizations", "krylov_solves", "krylov_iterations", "pattern_rebuilds", "rejected_extrapolations", "plain_retries", "double_precision_fallbacks", "force_only_acceptances",
                                           "assembly_seconds", "linear_seconds", "pattern_seconds", "factorization_seconds", "analysis_seconds", "ordering",
                                           "blas_kernels", "factor_entries", "factorization_flops")})
