@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <omp.h>
+
 #include "strandfem/constraints/rigid_tie.hpp"
 
 namespace strandfem {
@@ -80,38 +82,59 @@ int Assembler::block_base(int row_node, int column_node) const {
 template <int Nodes>
 void Assembler::scatter(const Model& model, const std::vector<NodeState>& state, const std::array<int, Nodes>& nodes,
                         const Eigen::Matrix<double, 6 * Nodes, 1>& force, const Eigen::Matrix<double, 6 * Nodes, 6 * Nodes>* tangent,
-                        std::vector<double>& nodal_forces, std::vector<double>& slave_forces, std::vector<double>* values) {
+                        const NodeRange& owned, std::vector<double>& nodal_forces, std::vector<double>& slave_forces,
+                        std::vector<double>* values) {
   constexpr int size = 6 * Nodes;
   std::array<int, Nodes> masters;
-  bool any_tied = false;
+  bool any_tied = false, any_owned = false;
   for (int a = 0; a < Nodes; ++a) {
     masters[a] = dofs_.master_of(model, nodes[a]);
     any_tied = any_tied || masters[a] != nodes[a];
+    any_owned = any_owned || owned.contains(masters[a]);
   }
+  if (!any_owned) return;
   const Eigen::Matrix<double, size, 1>* r = &force;
   const Eigen::Matrix<double, size, size>* K = tangent;
   Eigen::Matrix<double, size, 1> moved_force;
   Eigen::Matrix<double, size, size> moved_tangent;
   if (any_tied) {
-    // Move tied nodes' contributions to their masters: r_m = T^T r_s, K_ab = T_a^T K_ab T_b.
-    Eigen::Matrix<double, size, size> transform = Eigen::Matrix<double, size, size>::Identity();
+    // Move tied nodes' contributions to their masters, block by block: r_m = T^T r_s, K_ab = T_a^T K_ab T_b.
+    std::array<Mat6, Nodes> transform;
+    moved_force = force;
     for (int a = 0; a < Nodes; ++a) {
       if (masters[a] == nodes[a]) continue;
-      for (int c = 0; c < 6; ++c) slave_forces[6 * nodes[a] + c] += force[6 * a + c];
-      transform.template block<6, 6>(6 * a, 6 * a) = tie_transform(state[nodes[a]].position - state[masters[a]].position);
+      if (owned.contains(masters[a]))
+        for (int c = 0; c < 6; ++c) slave_forces[6 * nodes[a] + c] += force[6 * a + c];
+      transform[a] = tie_transform(state[nodes[a]].position - state[masters[a]].position);
+      moved_force.template segment<6>(6 * a) = transform[a].transpose() * force.template segment<6>(6 * a);
     }
-    moved_force = transform.transpose() * force;
     r = &moved_force;
     if (tangent) {
-      moved_tangent = transform.transpose() * (*tangent) * transform;
+      moved_tangent = *tangent;
+      for (int a = 0; a < Nodes; ++a) {
+        if (masters[a] == nodes[a]) continue;
+        for (int b = 0; b < Nodes; ++b) {
+          const Mat6 rows_moved = transform[a].transpose() * moved_tangent.template block<6, 6>(6 * a, 6 * b);
+          moved_tangent.template block<6, 6>(6 * a, 6 * b) = rows_moved;
+        }
+      }
+      for (int b = 0; b < Nodes; ++b) {
+        if (masters[b] == nodes[b]) continue;
+        for (int a = 0; a < Nodes; ++a) {
+          const Mat6 columns_moved = moved_tangent.template block<6, 6>(6 * a, 6 * b) * transform[b];
+          moved_tangent.template block<6, 6>(6 * a, 6 * b) = columns_moved;
+        }
+      }
       K = &moved_tangent;
     }
   }
   for (int a = 0; a < Nodes; ++a)
-    for (int c = 0; c < 6; ++c) nodal_forces[6 * masters[a] + c] += (*r)[6 * a + c];
+    if (owned.contains(masters[a]))
+      for (int c = 0; c < 6; ++c) nodal_forces[6 * masters[a] + c] += (*r)[6 * a + c];
   if (!K) return;
   const std::vector<int>& column_start = pattern_.column_start;
-  for (int b = 0; b < Nodes; ++b)
+  for (int b = 0; b < Nodes; ++b) {
+    if (!owned.contains(masters[b])) continue;
     for (int a = 0; a < Nodes; ++a) {
       // Outside the pattern (an interaction that entered within the iteration): the pattern grows at acceptance.
       const int base = block_base(masters[a], masters[b]);
@@ -124,17 +147,19 @@ void Assembler::scatter(const Model& model, const std::vector<NodeState>& state,
           if (rows[c] >= 0) column[rows[c]] += (*K)(6 * a + c, 6 * b + j);
       }
     }
+  }
 }
 
-// Interaction contributions act on their six nodes; sequential, in order (deterministic).
-void Assembler::add_interactions(const Model& model, const ModelState& model_state, const std::vector<NodeState>& state,
-                                 std::vector<double>& nodal_forces, std::vector<double>& slave_forces,
-                                 std::vector<double>* values) {
-  const bool with_tangent = values != nullptr;
-  contributions_.clear();
-  for (const Interaction* interaction : model_state.interactions()) interaction->contributions(model.mesh, contributions_);
-  for (const PairContribution& c : contributions_)
-    scatter<6>(model, state, c.nodes, *c.force, with_tangent ? c.tangent : nullptr, nodal_forces, slave_forces, values);
+Assembler::NodeRange Assembler::owned_nodes(int thread, int threads) const {
+  // Equal shares of the pattern's node blocks, a fair measure of the scatter's work per column node.
+  const int node_count = static_cast<int>(node_column_start_.size()) - 1;
+  auto boundary = [&](int t) {
+    if (t >= threads) return node_count;
+    const std::int64_t share = static_cast<std::int64_t>(node_column_start_.back()) * t / threads;
+    return static_cast<int>(std::lower_bound(node_column_start_.begin(), node_column_start_.end(), share) -
+                            node_column_start_.begin());
+  };
+  return {boundary(thread), boundary(thread + 1)};
 }
 
 void Assembler::assemble(const Model& model, ModelState& model_state, const std::vector<NodeState>& state,
@@ -160,10 +185,20 @@ void Assembler::assemble(const Model& model, ModelState& model_state, const std:
   nodal_forces.assign(6 * node_count, 0.0);
   std::vector<double> slave_forces(6 * node_count, 0.0);
   if (with_tangent) values->assign(pattern_.nonzeros(), 0.0);
-  for (int k = 0; k < element_count; ++k)
-    scatter<3>(model, state, model.elements[k].nodes(), outputs_[k].residual, with_tangent ? &outputs_[k].tangent : nullptr,
-               nodal_forces, slave_forces, values);
-  add_interactions(model, model_state, state, nodal_forces, slave_forces, values);
+  contributions_.clear();
+  for (const Interaction* interaction : model_state.interactions()) interaction->contributions(model.mesh, contributions_);
+  // Each thread owns a range of nodes (their columns and forces) and walks every element and contribution in
+  // order: each value receives its terms in the same order whatever the thread count (deterministic sums).
+#pragma omp parallel
+  {
+    const NodeRange owned = owned_nodes(omp_get_thread_num(), omp_get_num_threads());
+    for (int k = 0; k < element_count; ++k)
+      scatter<3>(model, state, model.elements[k].nodes(), outputs_[k].residual,
+                 with_tangent ? &outputs_[k].tangent : nullptr, owned, nodal_forces, slave_forces, values);
+    for (const PairContribution& c : contributions_)
+      scatter<6>(model, state, c.nodes, *c.force, with_tangent ? c.tangent : nullptr, owned, nodal_forces, slave_forces,
+                 values);
+  }
   if (!with_tangent) return;
   // Rotation of the lever arm: d(arm x f)/dtheta_m = f^ arm^ (f: the slave's force, held fixed).
   for (std::size_t t = 0; t < model.ties.size(); ++t) {

@@ -11,8 +11,9 @@
 namespace strandfem {
 
 // Builds the tangent's sparsity pattern once per DOF map and scatters element contributions into it by node
-// blocks (no triplets inside Newton). Element evaluation runs in parallel; the scatter is sequential in
-// element order so the sums, and hence the results, do not depend on the thread count.
+// blocks (no triplets inside Newton). Element evaluation runs in parallel; so does the scatter, each thread
+// adding the columns and forces of its own nodes in element and contribution order, so that the sums, and
+// hence the results, do not depend on the thread count.
 class Assembler {
  public:
   // The pattern couples each element's nodes and, for every pair of the state's interactions' element_pairs(),
@@ -29,14 +30,20 @@ class Assembler {
                 std::vector<double>& nodal_forces, std::vector<double>* values, const ElementDamping& damping = {});
 
  private:
-  void add_interactions(const Model& model, const ModelState& model_state, const std::vector<NodeState>& state,
-                        std::vector<double>& nodal_forces, std::vector<double>& slave_forces, std::vector<double>* values);
+  // Master nodes [first, last): a thread's share of the scatter.
+  struct NodeRange {
+    int first = 0, last = 0;
+    bool contains(int node) const { return node >= first && node < last; }
+  };
+  NodeRange owned_nodes(int thread, int threads) const;
   // Adds a block over `nodes` (6 DOFs each) to the global forces and tangent, moving tied slaves' rows and
-  // columns to their masters; tied slaves' forces are also collected for the lever-arm term.
+  // columns to their masters; tied slaves' forces are also collected for the lever-arm term. Only the forces
+  // of `owned` master nodes and the tangent's columns of `owned` nodes are written.
   template <int Nodes>
   void scatter(const Model& model, const std::vector<NodeState>& state, const std::array<int, Nodes>& nodes,
                const Eigen::Matrix<double, 6 * Nodes, 1>& force, const Eigen::Matrix<double, 6 * Nodes, 6 * Nodes>* tangent,
-               std::vector<double>& nodal_forces, std::vector<double>& slave_forces, std::vector<double>* values);
+               const NodeRange& owned, std::vector<double>& nodal_forces, std::vector<double>& slave_forces,
+               std::vector<double>* values);
   // Where the block (row node, column node) sits in the tangent: the value of (row, col) is at
   // column_start[col] + base + row, for every free row of the row node and column of the column node;
   // kNoBlock when the two nodes are not coupled in the pattern.
