@@ -26,6 +26,13 @@ Assembler::Assembler(const Model& model, const ModelState& model_state, const Do
       couple(a, b);
       couple(b, a);
     }
+  // Equations are numbered node by node: a node's free DOFs are one run, from its first equation on.
+  std::vector<int> first_equation(node_count, -1), free_count(node_count, 0);
+  for (int node = 0; node < node_count; ++node)
+    for (int e : dofs.equation[node])
+      if (e >= 0) {
+        if (free_count[node]++ == 0) first_equation[node] = e;
+      }
   pattern_.size = n;
   pattern_.column_start.assign(n + 1, 0);
   node_column_start_.assign(node_count + 1, 0);
@@ -36,29 +43,23 @@ Assembler::Assembler(const Model& model, const ModelState& model_state, const Do
     // Every column of this node holds the same rows: a row node's place in them is one number per node pair.
     int offset = 0;
     for (int row_node : rows) {
-      const auto& eq = dofs.equation[row_node];
-      const auto first = std::find_if(eq.begin(), eq.end(), [](int e) { return e >= 0; });
-      if (first == eq.end()) continue;
+      if (free_count[row_node] == 0) continue;
       node_rows_.push_back(row_node);
-      node_row_base_.push_back(offset - *first);
-      offset += static_cast<int>(std::count_if(eq.begin(), eq.end(), [](int e) { return e >= 0; }));
+      node_row_base_.push_back(offset - first_equation[row_node]);
+      offset += free_count[row_node];
     }
     node_column_start_[node + 1] = static_cast<int>(node_rows_.size());
     for (int j = 0; j < 6; ++j) {
       const int col = dofs.equation[node][j];
       if (col < 0) continue;
-      for (int row_node : rows)
-        for (int i = 0; i < 6; ++i)
-          if (dofs.equation[row_node][i] >= 0) pattern_.row_index.push_back(dofs.equation[row_node][i]);
+      for (int k = node_column_start_[node]; k < node_column_start_[node + 1]; ++k)
+        for (int i = 0; i < free_count[node_rows_[k]]; ++i) pattern_.row_index.push_back(first_equation[node_rows_[k]] + i);
       pattern_.column_start[col + 1] = static_cast<int>(pattern_.row_index.size());
     }
   }
-  // Nodes couple as wholes, and equations are numbered node by node: a node's free DOFs are one block.
-  for (std::size_t node = 0; node < dofs.equation.size(); ++node) {
-    const auto& eq = dofs.equation[node];
-    const auto first = std::find_if(eq.begin(), eq.end(), [](int e) { return e >= 0; });
-    if (first != eq.end()) pattern_.block_start.push_back(*first);
-  }
+  // Nodes couple as wholes: a node's free DOFs are one block of the orderings' graph.
+  for (int node = 0; node < node_count; ++node)
+    if (free_count[node] > 0) pattern_.block_start.push_back(first_equation[node]);
   pattern_.block_start.push_back(n);
   for (const RigidTie& tie : model.ties) {
     std::array<int, 9> slots;
