@@ -19,9 +19,7 @@
 #include "strandfem/post/model_report.hpp"
 #include "strandfem/solver/blas_kernels.hpp"
 
-#ifndef STRANDFEM_GIT_REVISION
-#define STRANDFEM_GIT_REVISION "unknown"
-#endif
+#include "strandfem_git_revision.hpp"  // generated at build time (cmake/GitRevision.cmake)
 
 namespace {
 
