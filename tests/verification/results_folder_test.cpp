@@ -1,8 +1,11 @@
 // Requirement (issue 10): a run owns its results folder (it removes what an earlier run left, only StrandFEM's
 // own files, and summary.json says "running" until the end), write errors end the run with exit code 4 and a
-// message naming the file, whole files are never seen half written, and summary.json records the threads used.
+// message naming the file, whole files are never seen half written, and summary.json records the threads used,
+// the BLAS kernels that ran and the commit the program was built from.
 #include <gtest/gtest.h>
 
+#include <cctype>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -141,6 +144,31 @@ TEST(ResultsFolder, SameNumbersWhateverTheThreadCount) {
     EXPECT_FALSE(first.empty()) << file;
     EXPECT_EQ(first, second) << file << " differs between 1 and 2 threads";
   }
+}
+
+// The source tree's short commit hash, or "" where git cannot tell (a source tree without its history).
+std::string source_revision() {
+  const std::string command = std::string("git -C \"") + STRANDFEM_SOURCE_DIR + "\" rev-parse --short HEAD 2>/dev/null";
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) return "";
+  std::string text;
+  char buffer[128];
+  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) text += buffer;
+  if (pclose(pipe) != 0) return "";
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
+  return text;
+}
+
+// The program names the commit it was built from, read at build time (cmake/GitRevision.cmake), not when the
+// build folder was configured: after a commit without a rebuild this fails.
+TEST(ResultsFolder, SummaryRecordsTheCommitItWasBuiltFrom) {
+  const ProgramRun run = run_case("cases/examples/seven_wire_axial.yaml", "git_revision", "-t 1");
+  ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
+  const nlohmann::json summary = nlohmann::json::parse(read(run.output / "results" / "summary.json"));
+  const std::string built_from = summary["build"]["git_revision"].get<std::string>();
+  const std::string head = source_revision();
+  if (head.empty()) EXPECT_EQ(built_from, "unknown");
+  else EXPECT_EQ(built_from.substr(0, built_from.find('-')), head);  // "-dirty": tracked files had changed
 }
 
 // The BLAS kernels the factorizations ran on are read back into summary.json. On AVX-512 CPUs that OpenBLAS takes
