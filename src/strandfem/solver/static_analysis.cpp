@@ -364,11 +364,16 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
     start = state_;
     correction = rhs;
     // Backtracking: while the full correction raises the residual (contact switching, stick/slip, large
-    // rotations), halve it, at most opt.line_search_cuts times; the last try is kept either way.
+    // rotations), halve it, at most opt.line_search_cuts times; the last try is kept either way. Not the first
+    // correction of an attempt: it carries the load step, and on it the residual is no measure of progress.
+    // Cardinal's return halves showed it: the full first correction raised the residual from 0.004 to 0.07-0.4
+    // (crossings pressed into the normal band) and the next two brought it within the tolerance, while the
+    // halved one left half the motion to the next correction, halved again, and Newton crept (docs/theory.md).
+    const int line_search_cuts = report.corrections == 1 ? 0 : opt.line_search_cuts;
     double alpha = 1;
     last_correction2_ = apply_correction(alpha);
     Residual trial = evaluate_residual();
-    for (int cut = 0; cut < opt.line_search_cuts && !(trial.relative <= current.relative); ++cut) {
+    for (int cut = 0; cut < line_search_cuts && !(trial.relative <= current.relative); ++cut) {
       alpha *= 0.5;
       last_correction2_ = apply_correction(alpha);
       trial = evaluate_residual();
