@@ -147,6 +147,38 @@ TEST(NewtonConvergence, ResidualDecreasesQuadratically) {
   EXPECT_GE(checked, 15);
 }
 
+// The line search never cuts an attempt's first correction (it carries the load step; docs/theory.md, "Line
+// search"), and does cut later ones. The cantilever rolled into a circle in eight increments: the first correction
+// of the first increment (the linear response to an eighth of the moment) raises the residual a thousandfold.
+TEST(NewtonConvergence, LineSearchTakesTheFirstCorrectionInFull) {
+  auto first_attempt = [](int line_search_cuts) {
+    CaseDefinition c = load_case(case_path("cases/verification/cantilever_roll_up.yaml"));
+    c.model.options.extrapolate = false;
+    c.model.options.line_search_cuts = line_search_cuts;
+    c.model.options.max_cutbacks = 0;
+    c.model.steps.at(0).increments = 8;
+    StaticAnalysis analysis(c.model);
+    // The first attempt of the first increment, iteration by iteration (it may not converge: no cut-back here).
+    std::vector<double> history;
+    bool first_attempt_over = false;
+    analysis.run({}, [&](const IncrementReport& r) {
+      if (r.residual_history.size() <= history.size()) first_attempt_over = true;
+      if (!first_attempt_over) history = r.residual_history;
+    });
+    return history;
+  };
+  const std::vector<double> full = first_attempt(0), searched = first_attempt(20);
+  ASSERT_GE(full.size(), 4u);
+  ASSERT_GE(searched.size(), 4u);
+  EXPECT_GT(full[1], full[0]) << "the first correction must raise the residual for this test to mean anything";
+  EXPECT_EQ(searched[1], full[1]);  // the same iterate: the first correction was not cut
+  // Later corrections are cut while they raise the residual: with 20 halvings none of them does.
+  bool full_rose = false;
+  for (std::size_t k = 2; k < full.size(); ++k) full_rose |= full[k] > full[k - 1];
+  for (std::size_t k = 2; k < searched.size(); ++k) EXPECT_LE(searched[k], searched[k - 1]) << "correction " << k;
+  EXPECT_TRUE(full_rose) << "without the search a later correction must raise the residual";
+}
+
 // The extrapolated predictor changes where Newton starts, not where it ends: the same converged response to
 // within the tolerances, in fewer iterations on a strand pulled in equal increments (frictional contact).
 TEST(NewtonConvergence, ExtrapolatedPredictorKeepsTheResultInFewerIterations) {
