@@ -179,6 +179,27 @@ TEST(NewtonConvergence, LineSearchTakesTheFirstCorrectionInFull) {
   EXPECT_TRUE(full_rose) << "without the search a later correction must raise the residual";
 }
 
+// An attempt whose full first correction raised the residual is measured from there by the divergence check, not
+// from the predictor: the same roll-up, whose searched corrections then fall slowly (967 -> 131 -> 6.7 -> ... -> 2.2
+// after eight) but stay above the predictor's residual of 1 for longer than the check's eight corrections.
+TEST(NewtonConvergence, DivergenceCheckStartsAfterTheFullFirstCorrection) {
+  CaseDefinition c = load_case(case_path("cases/verification/cantilever_roll_up.yaml"));
+  c.model.options.extrapolate = false;
+  c.model.options.line_search_cuts = 20;
+  c.model.options.max_cutbacks = 0;
+  c.model.options.max_iterations = 200;
+  c.model.steps.at(0).increments = 8;
+  StaticAnalysis analysis(c.model);
+  std::size_t longest = 0;
+  int converged_increments = 0;
+  const AnalysisStatus status = analysis.run([&](const IncrementReport&) { ++converged_increments; },
+                                             [&](const IncrementReport& r) {
+                                               if (r.increment == 1) longest = std::max(longest, r.residual_history.size());
+                                             });
+  EXPECT_GT(longest, 10u) << "the first increment's attempt must go on past eight corrections above 1";
+  EXPECT_GE(converged_increments, 1) << status.message;
+}
+
 // The extrapolated predictor changes where Newton starts, not where it ends: the same converged response to
 // within the tolerances, in fewer iterations on a strand pulled in equal increments (frictional contact).
 TEST(NewtonConvergence, ExtrapolatedPredictorKeepsTheResultInFewerIterations) {
