@@ -18,7 +18,7 @@ struct SolverOptions {
   double displacement_tolerance = 0.005;  // ||last correction|| / ||increment displacement||
   int max_iterations = 25;                // Newton iterations per increment before a cut-back
   int max_cutbacks = 8;                   // successive halvings of an increment before giving up
-  int line_search_cuts = 0;               // halvings of a Newton correction that raises the residual
+  int line_search_cuts = 0;               // halvings of a Newton correction that raises the residual (not an attempt's first)
   // Krylov reuse: GMRES on the current tangent, preconditioned by the last factorization, up to this many
   // iterations before refactoring (0: factor every Newton iteration); Newton keeps the exact tangent.
   int krylov_iterations = 12;

@@ -380,7 +380,7 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
     }
     previous_reference = current.reference;
     current = trial;
-    // The divergence check below measures an attempt against where its searched corrections start: after the
+    // The divergence check (top of the loop) measures an attempt from where its searched corrections start: after the
     // full first correction. Against the predictor's residual, S32 case 4's cycle-2 return failed an increment whose
     // first correction left 0.84 and whose next seven fell steadily to 0.011, above the predictor's 0.0057.
     if (report.corrections == 1) round_start = std::max(round_start, current.relative);
