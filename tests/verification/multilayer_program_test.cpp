@@ -142,7 +142,8 @@ TEST(MultilayerProgram, PrunedPatternGivesTheSameResponseWithSmallerFactors) {
     o.factor_entries = analysis.linear_statistics().factor_entries;
     return o;
   };
-  const Outcome pruned = run(ContactSettings{}.pattern_margin), full = run(0.9);  // 0.9 (r_a + r_b) is beyond the search margin: every candidate
+  // The default margin against 0.9 (r_a + r_b), beyond the search margin: every candidate
+  const Outcome pruned = run(ContactSettings{}.pattern_margin), full = run(0.9);
   EXPECT_LT(pruned.factor_entries, full.factor_entries);
   double largest = 0, difference = 0;
   for (std::size_t i = 0; i < full.forces.size(); ++i) {

@@ -147,16 +147,23 @@ TEST(NewtonConvergence, ResidualDecreasesQuadratically) {
   EXPECT_GE(checked, 15);
 }
 
+// The cantilever rolled into a circle in eight increments from the plain predictor, without cut-backs: the first
+// correction of the first increment (the linear response to an eighth of the moment) raises the residual a
+// thousandfold.
+CaseDefinition roll_up_in_eight_increments(int line_search_cuts) {
+  CaseDefinition c = load_case(case_path("cases/verification/cantilever_roll_up.yaml"));
+  c.model.options.extrapolate = false;
+  c.model.options.line_search_cuts = line_search_cuts;
+  c.model.options.max_cutbacks = 0;
+  c.model.steps.at(0).increments = 8;
+  return c;
+}
+
 // The line search never cuts an attempt's first correction (it carries the load step; docs/theory.md, "Line
-// search"), and does cut later ones. The cantilever rolled into a circle in eight increments: the first correction
-// of the first increment (the linear response to an eighth of the moment) raises the residual a thousandfold.
+// search"), and does cut later ones.
 TEST(NewtonConvergence, LineSearchTakesTheFirstCorrectionInFull) {
   auto first_attempt = [](int line_search_cuts) {
-    CaseDefinition c = load_case(case_path("cases/verification/cantilever_roll_up.yaml"));
-    c.model.options.extrapolate = false;
-    c.model.options.line_search_cuts = line_search_cuts;
-    c.model.options.max_cutbacks = 0;
-    c.model.steps.at(0).increments = 8;
+    CaseDefinition c = roll_up_in_eight_increments(line_search_cuts);
     StaticAnalysis analysis(c.model);
     // The first attempt of the first increment, iteration by iteration (it may not converge: no cut-back here).
     std::vector<double> history;
@@ -180,15 +187,11 @@ TEST(NewtonConvergence, LineSearchTakesTheFirstCorrectionInFull) {
 }
 
 // An attempt whose full first correction raised the residual is measured from there by the divergence check, not
-// from the predictor: the same roll-up, whose searched corrections then fall slowly (967 -> 131 -> 6.7 -> ... -> 2.2
+// from the predictor: the roll-up, whose searched corrections then fall slowly (967 -> 131 -> 6.7 -> ... -> 2.2
 // after eight) but stay above the predictor's residual of 1 for longer than the check's eight corrections.
 TEST(NewtonConvergence, DivergenceCheckStartsAfterTheFullFirstCorrection) {
-  CaseDefinition c = load_case(case_path("cases/verification/cantilever_roll_up.yaml"));
-  c.model.options.extrapolate = false;
-  c.model.options.line_search_cuts = 20;
-  c.model.options.max_cutbacks = 0;
+  CaseDefinition c = roll_up_in_eight_increments(20);
   c.model.options.max_iterations = 200;
-  c.model.steps.at(0).increments = 8;
   StaticAnalysis analysis(c.model);
   std::size_t longest = 0;
   int converged_increments = 0;

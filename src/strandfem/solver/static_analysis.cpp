@@ -369,7 +369,8 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
     // Cardinal's return halves showed it: the full first correction raised the residual from 0.004 to 0.07-0.4
     // (crossings pressed into the normal band) and the next two brought it within the tolerance, while the
     // halved one left half the motion to the next correction, halved again, and Newton crept (docs/theory.md).
-    const int line_search_cuts = report.corrections == 1 ? 0 : opt.line_search_cuts;
+    const bool first_correction = report.corrections == 1;
+    const int line_search_cuts = first_correction ? 0 : opt.line_search_cuts;
     double alpha = 1;
     last_correction2_ = apply_correction(alpha);
     Residual trial = evaluate_residual();
@@ -383,7 +384,7 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
     // The divergence check (top of the loop) measures an attempt from where its searched corrections start: after the
     // full first correction. Against the predictor's residual, S32 case 4's cycle-2 return failed an increment whose
     // first correction left 0.84 and whose next seven fell steadily to 0.011, above the predictor's 0.0057.
-    if (report.corrections == 1) round_start = std::max(round_start, current.relative);
+    if (first_correction) round_start = std::max(round_start, current.relative);
     accept_iterate();
     // A correction longer than the model itself is divergence, not progress: cut back at once.
     if (last_correction2_ > model_extent2_) return false;
