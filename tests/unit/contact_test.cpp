@@ -289,6 +289,29 @@ TEST(ContactTangent, LineContactStickSlipOrthotropic) {
   EXPECT_LT(tangent_error(p, f, axis, ContactStatus::kSlip), 1e-6);
 }
 
+// The stabilization of a frictionless point (contact.frictionless_stabilization): a linear spring -k g_T on the
+// surface points' separation since the anchors, no cone, acting at the surfaces; exact tangent, point and line.
+TEST(ContactTangent, StabilizedFrictionlessPoint) {
+  const Vec3 axis = Vec3(1.0, 0.3, 0.2).normalized();
+  PairFixture crossing(0.5, 1.8);
+  PairFixture side_by_side(0.09, 0.0);
+  for (auto& n : side_by_side.b.x) n[1] += 1.8;
+  for (ContactKind kind : {ContactKind::kPoint, ContactKind::kLine}) {
+    const PairFixture& f = kind == ContactKind::kPoint ? crossing : side_by_side;
+    ContactPoint p = make_point(kind);
+    p.xi = 0.33;
+    p.mu1 = p.mu2 = 0;
+    p.sliding_stabilization = 500.0;
+    set_stick(p, f, 0.2, 0.1);  // far beyond any cone: there is none
+    const ContactResponse r = response_at(p, f, false, axis);
+    ASSERT_GT(r.tangential_gap.norm(), 0.01);
+    EXPECT_LT((r.friction + p.sliding_stabilization * r.tangential_gap).norm(), 1e-12 * r.friction.norm());
+    EXPECT_LT(tangent_error(p, f, axis, ContactStatus::kStick), 1e-6) << to_string(kind);
+    p.sliding_stabilization = 0;  // plain frictionless: no tangential force whatever the anchors
+    EXPECT_EQ(response_at(p, f, false, axis).friction.norm(), 0.0);
+  }
+}
+
 // Held friction states (within an increment, see ContactPoint::friction_mode) are smooth force laws with
 // exact tangents too; a held slip keeps the magnitude on the ellipse in its held direction.
 TEST(ContactTangent, HeldStickAndHeldSlip) {
@@ -730,6 +753,44 @@ TEST(ContactSet, SlippingPointsStartFreeWhereTheLoadingTurns) {
   EXPECT_NEAR(r.friction.norm(), 0.9 * 0.3 * r.normal_force, 1e-6 * r.normal_force);  // 0.9 of the cone
   contacts.accept_iterate(mesh);
   EXPECT_EQ(p.friction_mode, FrictionMode::kHeldStick);
+}
+
+// A frictionless crossing with the stabilization resists only the slide since the last converged increment: slid
+// 0.2 mm it pushes back k_s 0.2 against the slide; the commit restarts the spring there (the same state then
+// carries no tangential force) and reports the energy it held, k_s 0.2^2 / 2; a further 0.1 mm gives k_s 0.1.
+TEST(ContactSet, FrictionlessStabilizationResistsOnlyTheSlideWithinAnIncrement) {
+  Mesh mesh = v_wire_mesh(0.0);
+  mesh.add_line("across", 2, 0, 0, 2, [](double t) { return std::make_pair(Vec3(-1.95, 20.0 * t - 10.0, 5.0), Mat3::Identity()); });
+  ContactSettings settings = enabled_contact();
+  settings.frictionless_stabilization = 1e-4;
+  settings.initial_overlap = InitialOverlap::kKeep;
+  ContactSet contacts;
+  contacts.initialize(mesh, settings);
+  const std::size_t crossing = crossing_index(contacts);
+  const ContactPoint& p = contacts.points()[crossing];
+  ASSERT_EQ(p.mu1, 0.0);
+  const double k = p.sliding_stabilization;
+  ASSERT_DOUBLE_EQ(k, 1e-4 * p.stiffness.normal);
+  std::vector<NodeState> state = reference_state(mesh);
+  contacts.commit(mesh, state);
+  const double across_is_slave = p.wire_a == 1 ? 1.0 : -1.0;
+  auto slide_and_evaluate = [&](double dz) {
+    contacts.begin_increment(true);
+    for (std::size_t n = 0; n < state.size(); ++n)
+      if (mesh.nodes[n].wire == 1) state[n].position.z() += dz;
+    contacts.evaluate(mesh, state, false);
+    return contacts.responses()[crossing];
+  };
+  const ContactResponse first = slide_and_evaluate(0.2);
+  ASSERT_NE(first.status, ContactStatus::kOpen);
+  EXPECT_NEAR(across_is_slave * first.friction.z(), -k * 0.2, 1e-9 * k);
+  EXPECT_NEAR(first.friction.norm(), k * 0.2, 1e-9 * k);
+  contacts.commit(mesh, state);
+  EXPECT_NEAR(contacts.commit_stabilization_energy(), 0.5 * k * 0.2 * 0.2, 1e-9 * k);
+  EXPECT_NEAR(contacts.responses()[crossing].friction.norm(), 0.0, 1e-9 * k);
+  EXPECT_EQ(p.history.dissipated_energy, 0.0);  // not friction's work
+  const ContactResponse second = slide_and_evaluate(0.1);
+  EXPECT_NEAR(across_is_slave * second.friction.z(), -k * 0.1, 1e-9 * k);
 }
 
 TEST(ContactSet, InitialOverlapIsOffset) {

@@ -58,6 +58,9 @@ struct ContactPoint {
   PenaltyStiffness stiffness;
   double mu1 = 0, mu2 = 0;         // along the strand axis projected on the contact plane, and across
   double allowed_slip = 0;         // elastic-slip law: slip (mm) at which the stick force reaches the cone; 0: eq. 2.6
+  // Frictionless points with contact.frictionless_stabilization: stiffness (units of the normal penalty) of the
+  // tangential spring from the last converged contact position; 0 otherwise.
+  double sliding_stabilization = 0;
   ContactHistory history;
   // Working active set of the current increment (not history). An active point keeps its penalty force
   // P = -k_n g even when the gap opens (tension) until Newton has converged; only then are tensile points
@@ -72,6 +75,12 @@ struct ContactPoint {
   int friction_switches = 0;       // switches in this increment; past kMaxFrictionSwitches the plain law
   V3<double> slip_direction{0.0, 0.0, 0.0};  // held slip: unit direction of the friction force on the slave
 };
+
+// Whether a point carries a tangential force: friction, or the stabilization of a frictionless point. Either acts
+// at the wire surfaces (rotations enter) and needs the anchors.
+inline bool carries_tangential_force(const ContactPoint& p) {
+  return p.history.anchored && (p.mu1 > 0 || p.sliding_stabilization > 0);
+}
 
 // Result of evaluating one contact point at a given state.
 struct ContactResponse {
@@ -163,12 +172,19 @@ ContactForces<T> contact_forces(const ContactPoint& point, const ElementPose<T>&
   out.status = ContactStatus::kStick;
   out.normal_force = normal_force(point.stiffness.normal, smoothing, out.gap);
   V3<T> total = scale(out.normal_force, n);
-  const bool frictional = point.history.anchored && point.mu1 > 0;
+  const bool frictional = carries_tangential_force(point);
   if (frictional) {
     // Tangential gap: the separation of the two surface stick points, projected on the contact plane.
     const V3<T> separation = sub(surface_point(a, anchor.xi, point.radius_a, anchor.direction_a),
                                  surface_point(b, anchor.eta, point.radius_b, anchor.direction_b));
     out.tangential_gap = sub(separation, scale(dot(n, separation), n));
+  }
+  if (frictional && !(point.mu1 > 0)) {
+    // Stabilized frictionless point: a linear spring on the motion since the last converged increment, no cone.
+    out.friction = scale(-point.sliding_stabilization, out.tangential_gap);
+    out.trial_friction = out.friction;
+    total = add(total, out.friction);
+  } else if (frictional) {
     const FrictionLaw law{point.mu1, point.mu2, point.stiffness.tangential, point.allowed_slip, point.friction_mode,
                           point.slip_direction};
     const FrictionForce<T> f = friction_force(law, n, out.tangential_gap, out.normal_force, axis);

@@ -322,6 +322,11 @@ void ContactSet::set_point_properties(const Mesh& mesh, ContactPoint& p, const V
   p.mu2 = p.mu1 * settings_.orthotropy_at(sa.material().name, sb.material().name);
   p.stiffness = penalty_stiffness(settings_, p.kind == ContactKind::kLine, modulus, diameter, element_size, p.mu1);
   p.allowed_slip = settings_.tangential_penalty == TangentialPenalty::kElasticSlip ? settings_.elastic_slip * element_size : 0.0;
+  p.sliding_stabilization = sliding_stabilization(p);
+}
+
+double ContactSet::sliding_stabilization(const ContactPoint& p) const {
+  return p.mu1 > 0 ? 0.0 : settings_.frictionless_stabilization * p.stiffness.normal;
 }
 
 void ContactSet::add_line_points(const Mesh& mesh, int group) {
@@ -463,7 +468,7 @@ void ContactSet::commit_point(const Mesh& mesh, const std::vector<NodeState>& st
     h.slipping = false;
     h.slip_since_reversal = 0;
     h.slip_direction.setZero();
-  } else if (h.closed && r.status != ContactStatus::kSlip) {
+  } else if (h.closed && r.status != ContactStatus::kSlip && !(p.sliding_stabilization > 0)) {
     return;  // sticking: the anchors stay
   }
   if (r.element_b < 0) {
@@ -475,7 +480,10 @@ void ContactSet::commit_point(const Mesh& mesh, const std::vector<NodeState>& st
   const auto [element_a, element_b] = elements_of(mesh, static_cast<int>(i));
   const Vec3 direction_a = section_direction(pose(mesh, state, element_a), r.xi, -r.normal);
   const Vec3 direction_b = section_direction(pose(mesh, state, element_b), r.eta, r.normal);
-  if (open || !h.anchored) {
+  // A stabilized frictionless point restarts its spring from here: the energy it held is what the stabilization took.
+  if (p.sliding_stabilization > 0 && !open && h.anchored)
+    commit_stabilization_energy_ += 0.5 * p.sliding_stabilization * r.tangential_gap.squaredNorm() * p.weight;
+  if (open || !h.anchored || p.sliding_stabilization > 0) {
     // An open point keeps its stick points where the two surfaces face each other now: if it closes within
     // the next increment, friction holds it from there at once (not one increment late).
     h.anchored = true;
@@ -512,6 +520,7 @@ double ContactSet::dissipated_energy() const {
 bool ContactSet::commit(const Mesh& mesh, const std::vector<NodeState>& state) {
   if (!settings_.enabled) return false;
   evaluate(mesh, state, false);
+  commit_stabilization_energy_ = 0;
   for (std::size_t i = 0; i < points_.size(); ++i) commit_point(mesh, state, i);
   double moved = 0;
   for (std::size_t n = 0; n < state.size(); ++n) moved = std::max(moved, (state[n].position - searched_positions_[n]).norm());

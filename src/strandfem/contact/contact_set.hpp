@@ -77,6 +77,7 @@ class ContactSet final : public Interaction {
   int search_count() const { return searches_; }
   // Work of friction over all slip up to the last commit, N mm.
   double dissipated_energy() const;
+  double commit_stabilization_energy() const override { return commit_stabilization_energy_; }
 
  private:
   void search(const Mesh& mesh, const std::vector<NodeState>& state);
@@ -85,6 +86,7 @@ class ContactSet final : public Interaction {
   void add_line_points(const Mesh& mesh, int group);
   void add_crossing(const Mesh& mesh, int element_a, int element_b, double xi, double eta);
   void set_point_properties(const Mesh& mesh, ContactPoint& p, const Vec3& reference_position);
+  double sliding_stabilization(const ContactPoint& p) const;
   void evaluate_point(const Mesh& mesh, const std::vector<NodeState>& state, int index, bool with_tangent,
                       ContactResponse& response) const;
   double initial_offset(const Mesh& mesh, const ContactPoint& p) const;
@@ -106,6 +108,7 @@ class ContactSet final : public Interaction {
   std::vector<NodeState> reference_;  // the mesh's stress-free state (overlap offsets are measured there)
   std::vector<Vec3> searched_positions_;
   int searches_ = 0;
+  double commit_stabilization_energy_ = 0;  // see commit_stabilization_energy()
 };
 
 }  // namespace strandfem

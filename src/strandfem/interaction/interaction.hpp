@@ -45,6 +45,9 @@ class Interaction {
   virtual int changes_at_convergence() = 0;
   // Converged increment at `state`: writes the history; true when element_pairs() changed.
   virtual bool commit(const Mesh& mesh, const std::vector<NodeState>& state) = 0;
+  // Energy the last commit took out of the interaction's stabilization (N mm; 0 without one): reported beside the
+  // viscous stabilization's, which Abaqus asks to keep small against the work done.
+  virtual double commit_stabilization_energy() const { return 0.0; }
   // Rejected increment (cut-back): the next begin_increment starts again from the converged history.
   virtual void revert() = 0;
   // Checkpoints: writes the converged state (history, bookkeeping); restore_state reads it back in place of the

@@ -158,6 +158,7 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
 void StaticAnalysis::add_increment_work() {
   energies_.stabilization_energy +=
       stabilization_.dissipated_energy(model_.elements, state_, committed_state_, stabilization_factor_);
+  for (const Interaction* interaction : model_state_.interactions()) energies_.stabilization_energy += interaction->commit_stabilization_energy();
   // Forces conjugate to the motion: reactions where the DOF is driven or supported, applied loads where it is free.
   double work = 0;
   for (std::size_t node = 0; node < state_.size(); ++node) {
