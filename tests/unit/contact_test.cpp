@@ -7,6 +7,7 @@
 #include <cmath>
 #include <functional>
 #include <stdexcept>
+#include <tuple>
 
 #include "strandfem/contact/contact_set.hpp"
 #include "strandfem/mesh/mesh.hpp"
@@ -289,9 +290,11 @@ TEST(ContactTangent, LineContactStickSlipOrthotropic) {
   EXPECT_LT(tangent_error(p, f, axis, ContactStatus::kSlip), 1e-6);
 }
 
-// The stabilization of a frictionless point (contact.frictionless_stabilization): a linear spring -k g_T on the
-// surface points' separation since the anchors, no cone, acting at the surfaces; exact tangent, point and line.
-TEST(ContactTangent, StabilizedFrictionlessPoint) {
+// The contact stabilization (contact.stabilization): a linear spring -k g on the separation of the surface points
+// that touched at the last converged increment (the start points), no cone, acting at the surfaces, beside friction
+// if any. With the start points on the stick points it is -k g_T; exact tangent, point and line, frictionless,
+// sticking and slipping.
+TEST(ContactTangent, StabilizationSpring) {
   const Vec3 axis = Vec3(1.0, 0.3, 0.2).normalized();
   PairFixture crossing(0.5, 1.8);
   PairFixture side_by_side(0.09, 0.0);
@@ -300,15 +303,25 @@ TEST(ContactTangent, StabilizedFrictionlessPoint) {
     const PairFixture& f = kind == ContactKind::kPoint ? crossing : side_by_side;
     ContactPoint p = make_point(kind);
     p.xi = 0.33;
-    p.mu1 = p.mu2 = 0;
     p.sliding_stabilization = 500.0;
-    set_stick(p, f, 0.2, 0.1);  // far beyond any cone: there is none
-    const ContactResponse r = response_at(p, f, false, axis);
-    ASSERT_GT(r.tangential_gap.norm(), 0.01);
-    EXPECT_LT((r.friction + p.sliding_stabilization * r.tangential_gap).norm(), 1e-12 * r.friction.norm());
-    EXPECT_LT(tangent_error(p, f, axis, ContactStatus::kStick), 1e-6) << to_string(kind);
-    p.sliding_stabilization = 0;  // plain frictionless: no tangential force whatever the anchors
-    EXPECT_EQ(response_at(p, f, false, axis).friction.norm(), 0.0);
+    for (auto [offset, turn, status] : {std::tuple{0.005, 0.002, ContactStatus::kStick}, std::tuple{0.2, 0.1, ContactStatus::kSlip}}) {
+      set_stick(p, f, offset, turn);
+      p.start_set = true;
+      p.start_a = p.history.stick_a;
+      p.start_b = p.history.stick_b;
+      p.start_direction_a = p.history.stick_direction_a;
+      p.start_direction_b = p.history.stick_direction_b;
+      const ContactResponse r = response_at(p, f, false, axis);
+      ASSERT_GT(r.tangential_gap.norm(), 1e-4);
+      EXPECT_LT((r.stabilization + p.sliding_stabilization * r.tangential_gap).norm(), 1e-12 * r.stabilization.norm());
+      EXPECT_LT(tangent_error(p, f, axis, status), 1e-6) << to_string(kind) << " with friction, offset " << offset;
+      ContactPoint frictionless = p;
+      frictionless.mu1 = frictionless.mu2 = 0;
+      EXPECT_LT((response_at(frictionless, f, false, axis).stabilization - r.stabilization).norm(), 1e-12 * r.stabilization.norm());
+      EXPECT_LT(tangent_error(frictionless, f, axis, ContactStatus::kStick), 1e-6) << to_string(kind) << " frictionless";
+    }
+    p.sliding_stabilization = 0;  // off: no spring whatever the start points
+    EXPECT_EQ(response_at(p, f, false, axis).stabilization.norm(), 0.0);
   }
 }
 
@@ -755,14 +768,14 @@ TEST(ContactSet, SlippingPointsStartFreeWhereTheLoadingTurns) {
   EXPECT_EQ(p.friction_mode, FrictionMode::kHeldStick);
 }
 
-// A frictionless crossing with the stabilization resists only the slide since the last converged increment: slid
+// A frictionless crossing with the contact stabilization resists only the slide since the last converged increment: slid
 // 0.2 mm it pushes back k_s 0.2 against the slide; the commit restarts the spring there (the same state then
 // carries no tangential force) and reports the energy it held, k_s 0.2^2 / 2; a further 0.1 mm gives k_s 0.1.
-TEST(ContactSet, FrictionlessStabilizationResistsOnlyTheSlideWithinAnIncrement) {
+TEST(ContactSet, StabilizationResistsOnlyTheSlideWithinAnIncrement) {
   Mesh mesh = v_wire_mesh(0.0);
   mesh.add_line("across", 2, 0, 0, 2, [](double t) { return std::make_pair(Vec3(-1.95, 20.0 * t - 10.0, 5.0), Mat3::Identity()); });
   ContactSettings settings = enabled_contact();
-  settings.frictionless_stabilization = 1e-4;
+  settings.stabilization = 1e-4;
   settings.initial_overlap = InitialOverlap::kKeep;
   ContactSet contacts;
   contacts.initialize(mesh, settings);
@@ -783,14 +796,17 @@ TEST(ContactSet, FrictionlessStabilizationResistsOnlyTheSlideWithinAnIncrement) 
   };
   const ContactResponse first = slide_and_evaluate(0.2);
   ASSERT_NE(first.status, ContactStatus::kOpen);
-  EXPECT_NEAR(across_is_slave * first.friction.z(), -k * 0.2, 1e-9 * k);
-  EXPECT_NEAR(first.friction.norm(), k * 0.2, 1e-9 * k);
+  EXPECT_NEAR(across_is_slave * first.stabilization.z(), -k * 0.2, 1e-9 * k);
+  EXPECT_NEAR(first.stabilization.norm(), k * 0.2, 1e-9 * k);
+  EXPECT_EQ(first.friction.norm(), 0.0);
   contacts.commit(mesh, state);
   EXPECT_NEAR(contacts.commit_stabilization_energy(), 0.5 * k * 0.2 * 0.2, 1e-9 * k);
-  EXPECT_NEAR(contacts.responses()[crossing].friction.norm(), 0.0, 1e-9 * k);
+  contacts.begin_increment(true);
+  contacts.evaluate(mesh, state, false);  // the same state: the spring starts from here
+  EXPECT_NEAR(contacts.responses()[crossing].stabilization.norm(), 0.0, 1e-9 * k);
   EXPECT_EQ(p.history.dissipated_energy, 0.0);  // not friction's work
   const ContactResponse second = slide_and_evaluate(0.1);
-  EXPECT_NEAR(across_is_slave * second.friction.z(), -k * 0.1, 1e-9 * k);
+  EXPECT_NEAR(across_is_slave * second.stabilization.z(), -k * 0.1, 1e-9 * k);
 }
 
 TEST(ContactSet, InitialOverlapIsOffset) {

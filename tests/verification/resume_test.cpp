@@ -90,6 +90,34 @@ TEST(Resume, ResumedRunWithInexactNewtonMatchesWithinTheNewtonTolerance) {
   }
 }
 
+// With the contact stabilization the springs' start points are not in the checkpoint: a restored run sets them
+// from its converged state, as the commit did, so it matches the uninterrupted run as without stabilization, and
+// the stabilization energy (which the checkpoint carries) too.
+TEST(Resume, ResumedRunWithContactStabilizationMatches) {
+  std::ifstream in(case_path(kCase));
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string contact = "contact: {friction: 0.3}";
+  ASSERT_NE(text.find(contact), std::string::npos);
+  text.replace(text.find(contact), contact.size(), "contact: {friction: 0.3, stabilization: 1.0e-4}");
+  const std::string file = ::testing::TempDir() + "/resume_stabilized.yaml";
+  std::ofstream(file) << text;
+  const auto folder = [](const char* tag) { return (std::filesystem::path(::testing::TempDir()) / tag / "results").string(); };
+  const ProgramRun full = run_program("run " + file + " -q -o " + folder("strandfem_resume_stabilized_full"), "resume_stabilized_full");
+  ASSERT_EQ(full.exit_code, 0) << full.stderr_text;
+  const std::string parts = folder("strandfem_resume_stabilized_first");
+  const ProgramRun first = run_program("run " + file + " -q -o " + parts + " --stop-after 12", "resume_stabilized_first");
+  ASSERT_EQ(first.exit_code, 5) << first.stderr_text;
+  const ProgramRun second = run_program("run " + file + " -q -o " + parts + " --resume", "resume_stabilized_second");
+  ASSERT_EQ(second.exit_code, 0) << second.stderr_text;
+  for (const char* name : {"history.csv", "contacts.csv"}) expect_same_rows(full.output / "results" / name, std::filesystem::path(parts) / name);
+  const auto energy = [](const std::filesystem::path& dir) {
+    return nlohmann::json::parse(std::ifstream(dir / "summary.json"))["energy"]["stabilization_energy_Nmm"].get<double>();
+  };
+  const double uninterrupted = energy(full.output / "results");
+  EXPECT_GT(uninterrupted, 0.0);
+  EXPECT_NEAR(energy(parts), uninterrupted, 1e-7 * uninterrupted);
+}
+
 // A finished run can be given more cycles: resumed with the last step's cycle count raised, it continues into
 // the new cycles and matches a run made with that count from the start. Fewer cycles, or a change to an
 // earlier step, is refused.

@@ -92,6 +92,7 @@ void reset_response(ContactResponse& r, int element_a, int element_b, double xi,
   r.slip_ratio = 1;
   r.friction.setZero();
   r.trial_friction.setZero();
+  r.stabilization.setZero();
   r.force.setZero();
 }
 
@@ -113,6 +114,10 @@ void evaluate_contact_into(const ContactPoint& point, const ElementPose<double>&
   anchor.eta = element_parameter(point.history.stick_b, element_b);
   anchor.direction_a = point.history.stick_direction_a;
   anchor.direction_b = point.history.stick_direction_b;
+  anchor.start_xi = point.kind == ContactKind::kLine ? xi : element_parameter(point.start_a, element_a);
+  anchor.start_eta = element_parameter(point.start_b, element_b);
+  anchor.start_direction_a = point.start_direction_a;
+  anchor.start_direction_b = point.start_direction_b;
   const ContactForces<double> f = contact_forces<double>(point, a, b, xi, eta, anchor, axis, pinned);
   r.status = f.status;
   r.gap = f.gap;
@@ -127,6 +132,7 @@ void evaluate_contact_into(const ContactPoint& point, const ElementPose<double>&
   r.slip_ratio = f.slip_ratio;
   r.friction = Vec3(f.friction[0], f.friction[1], f.friction[2]);
   r.trial_friction = Vec3(f.trial_friction[0], f.trial_friction[1], f.trial_friction[2]);
+  r.stabilization = Vec3(f.stabilization[0], f.stabilization[1], f.stabilization[2]);
   for (int i = 0; i < 12; ++i)
     for (int c = 0; c < 3; ++c) r.force[3 * i + c] = f.nodal[i][c];
   if (!with_tangent) return;

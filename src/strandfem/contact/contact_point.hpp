@@ -58,9 +58,15 @@ struct ContactPoint {
   PenaltyStiffness stiffness;
   double mu1 = 0, mu2 = 0;         // along the strand axis projected on the contact plane, and across
   double allowed_slip = 0;         // elastic-slip law: slip (mm) at which the stick force reaches the cone; 0: eq. 2.6
-  // Frictionless points with contact.frictionless_stabilization: stiffness (units of the normal penalty) of the
-  // tangential spring from the last converged contact position; 0 otherwise.
+  // contact.stabilization: stiffness (units of the normal penalty) of the tangential spring on the motion since
+  // the last converged increment; 0: none.
   double sliding_stabilization = 0;
+  // Where the point was at the last converged increment (the spring's anchors): wire coordinates and
+  // section-fixed surface directions, as the stick points. Rewritten at every commit (and on restore), never by
+  // a cut-back. Not history: friction's stick points are.
+  bool start_set = false;
+  double start_a = 0, start_b = 0;
+  Vec3 start_direction_a = Vec3::Zero(), start_direction_b = Vec3::Zero();
   ContactHistory history;
   // Working active set of the current increment (not history). An active point keeps its penalty force
   // P = -k_n g even when the gap opens (tension) until Newton has converged; only then are tensile points
@@ -76,11 +82,11 @@ struct ContactPoint {
   V3<double> slip_direction{0.0, 0.0, 0.0};  // held slip: unit direction of the friction force on the slave
 };
 
-// Whether a point carries a tangential force: friction, or the stabilization of a frictionless point. Either acts
-// at the wire surfaces (rotations enter) and needs the anchors.
-inline bool carries_tangential_force(const ContactPoint& p) {
-  return p.history.anchored && (p.mu1 > 0 || p.sliding_stabilization > 0);
-}
+// Whether a point carries a tangential force: friction (from its stick points) or the stabilization (from its
+// start points). Both act at the wire surfaces, so rotations enter.
+inline bool frictional(const ContactPoint& p) { return p.history.anchored && p.mu1 > 0; }
+inline bool stabilized(const ContactPoint& p) { return p.start_set && p.sliding_stabilization > 0; }
+inline bool carries_tangential_force(const ContactPoint& p) { return frictional(p) || stabilized(p); }
 
 // Result of evaluating one contact point at a given state.
 struct ContactResponse {
@@ -97,6 +103,7 @@ struct ContactResponse {
   double slip_ratio = 1;           // P / ||Q_trial||_mu (> 1: the trial lies inside the friction cone)
   Vec3 friction = Vec3::Zero();        // friction force on the slave: N or N/mm
   Vec3 trial_friction = Vec3::Zero();  // the elastic trial -k_t g_T
+  Vec3 stabilization = Vec3::Zero();   // the stabilization's spring force on the slave (N or N/mm)
   // Internal nodal forces and moments of the six nodes a0, a1, a2, b0, b1, b2 (6 per node: force, moment)
   // and their exact derivative with respect to (displacement, spin) increments of those nodes.
   ContactVector force = ContactVector::Zero();
@@ -108,6 +115,9 @@ struct ContactResponse {
 struct StickAnchor {
   double xi = 0, eta = 0;
   Vec3 direction_a = Vec3::Zero(), direction_b = Vec3::Zero();
+  // The start points of the stabilization's spring (ContactPoint::start_a...), likewise.
+  double start_xi = 0, start_eta = 0;
+  Vec3 start_direction_a = Vec3::Zero(), start_direction_b = Vec3::Zero();
 };
 
 // Normal force for gap g: the penalty law -k_n g, or with smoothing s > 0 the C1 law that sets in
@@ -132,7 +142,7 @@ template <class T>
 struct ContactForces {
   std::array<V3<T>, 12> nodal;
   T gap{}, normal_force{}, q1{}, q2{};
-  V3<T> normal{}, tangential_gap{}, trial_friction{}, friction{};
+  V3<T> normal{}, tangential_gap{}, trial_friction{}, friction{}, stabilization{};
   ContactStatus status = ContactStatus::kOpen;
   double slip_ratio = 1;
 };
@@ -172,19 +182,19 @@ ContactForces<T> contact_forces(const ContactPoint& point, const ElementPose<T>&
   out.status = ContactStatus::kStick;
   out.normal_force = normal_force(point.stiffness.normal, smoothing, out.gap);
   V3<T> total = scale(out.normal_force, n);
-  const bool frictional = carries_tangential_force(point);
-  if (frictional) {
+  if (stabilized(point)) {
+    // A linear spring, no cone, on the separation of the surface points that touched at the last converged
+    // increment: it resists only the motion within an increment (a damper in load time).
+    const V3<T> moved = sub(surface_point(a, anchor.start_xi, point.radius_a, anchor.start_direction_a),
+                            surface_point(b, anchor.start_eta, point.radius_b, anchor.start_direction_b));
+    out.stabilization = scale(-point.sliding_stabilization, sub(moved, scale(dot(n, moved), n)));
+    total = add(total, out.stabilization);
+  }
+  if (frictional(point)) {
     // Tangential gap: the separation of the two surface stick points, projected on the contact plane.
     const V3<T> separation = sub(surface_point(a, anchor.xi, point.radius_a, anchor.direction_a),
                                  surface_point(b, anchor.eta, point.radius_b, anchor.direction_b));
     out.tangential_gap = sub(separation, scale(dot(n, separation), n));
-  }
-  if (frictional && !(point.mu1 > 0)) {
-    // Stabilized frictionless point: a linear spring on the motion since the last converged increment, no cone.
-    out.friction = scale(-point.sliding_stabilization, out.tangential_gap);
-    out.trial_friction = out.friction;
-    total = add(total, out.friction);
-  } else if (frictional) {
     const FrictionLaw law{point.mu1, point.mu2, point.stiffness.tangential, point.allowed_slip, point.friction_mode,
                           point.slip_direction};
     const FrictionForce<T> f = friction_force(law, n, out.tangential_gap, out.normal_force, axis);
@@ -200,11 +210,12 @@ ContactForces<T> contact_forces(const ContactPoint& point, const ElementPose<T>&
   // force acts at the surface points x_a - r_a n and x_b + r_b n, so friction also twists both wires:
   // internal moments w N r (n x F) on each (the normal force has no arm).
   const auto na = centerline_shape(xi), nb = centerline_shape(eta);
-  const V3<T> twist = frictional ? cross(n, out.friction) : V3<T>{T(0.0), T(0.0), T(0.0)};
+  const bool tangential = carries_tangential_force(point);
+  const V3<T> twist = tangential ? cross(n, add(out.friction, out.stabilization)) : V3<T>{T(0.0), T(0.0), T(0.0)};
   for (int i = 0; i < 3; ++i) {
     out.nodal[2 * i] = scale(-point.weight * na[i], total);
     out.nodal[6 + 2 * i] = scale(point.weight * nb[i], total);
-    if (!frictional) continue;
+    if (!tangential) continue;
     out.nodal[2 * i + 1] = scale(point.weight * point.radius_a * na[i], twist);
     out.nodal[6 + 2 * i + 1] = scale(point.weight * point.radius_b * nb[i], twist);
   }

@@ -326,7 +326,7 @@ void ContactSet::set_point_properties(const Mesh& mesh, ContactPoint& p, const V
 }
 
 double ContactSet::sliding_stabilization(const ContactPoint& p) const {
-  return p.mu1 > 0 ? 0.0 : settings_.frictionless_stabilization * p.stiffness.normal;
+  return settings_.stabilization * p.stiffness.normal;
 }
 
 void ContactSet::add_line_points(const Mesh& mesh, int group) {
@@ -468,7 +468,7 @@ void ContactSet::commit_point(const Mesh& mesh, const std::vector<NodeState>& st
     h.slipping = false;
     h.slip_since_reversal = 0;
     h.slip_direction.setZero();
-  } else if (h.closed && r.status != ContactStatus::kSlip && !(p.sliding_stabilization > 0)) {
+  } else if (h.closed && r.status != ContactStatus::kSlip) {
     return;  // sticking: the anchors stay
   }
   if (r.element_b < 0) {
@@ -480,10 +480,7 @@ void ContactSet::commit_point(const Mesh& mesh, const std::vector<NodeState>& st
   const auto [element_a, element_b] = elements_of(mesh, static_cast<int>(i));
   const Vec3 direction_a = section_direction(pose(mesh, state, element_a), r.xi, -r.normal);
   const Vec3 direction_b = section_direction(pose(mesh, state, element_b), r.eta, r.normal);
-  // A stabilized frictionless point restarts its spring from here: the energy it held is what the stabilization took.
-  if (p.sliding_stabilization > 0 && !open && h.anchored)
-    commit_stabilization_energy_ += 0.5 * p.sliding_stabilization * r.tangential_gap.squaredNorm() * p.weight;
-  if (open || !h.anchored || p.sliding_stabilization > 0) {
+  if (open || !h.anchored) {
     // An open point keeps its stick points where the two surfaces face each other now: if it closes within
     // the next increment, friction holds it from there at once (not one increment late).
     h.anchored = true;
@@ -511,6 +508,21 @@ void ContactSet::commit_point(const Mesh& mesh, const std::vector<NodeState>& st
   h.slip_direction = direction;
 }
 
+void ContactSet::set_start_points(const Mesh& mesh, const std::vector<NodeState>& state) {
+  if (!(settings_.stabilization > 0)) return;
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    ContactPoint& p = points_[i];
+    const ContactResponse& r = responses_[i];
+    p.start_set = r.element_b >= 0;
+    if (!p.start_set) continue;
+    const auto [element_a, element_b] = elements_of(mesh, static_cast<int>(i));
+    p.start_a = wire_coordinate(p.element_a, r.xi);
+    p.start_b = wire_coordinate(r.element_b, r.eta);
+    p.start_direction_a = section_direction(pose(mesh, state, element_a), r.xi, -r.normal);
+    p.start_direction_b = section_direction(pose(mesh, state, element_b), r.eta, r.normal);
+  }
+}
+
 double ContactSet::dissipated_energy() const {
   double total = 0;
   for (const ContactPoint& p : points_) total += p.history.dissipated_energy;
@@ -520,8 +532,13 @@ double ContactSet::dissipated_energy() const {
 bool ContactSet::commit(const Mesh& mesh, const std::vector<NodeState>& state) {
   if (!settings_.enabled) return false;
   evaluate(mesh, state, false);
+  // The stabilization's springs restart from here; the energy they held is what the stabilization took.
   commit_stabilization_energy_ = 0;
-  for (std::size_t i = 0; i < points_.size(); ++i) commit_point(mesh, state, i);
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    const ContactPoint& p = points_[i];
+    if (p.sliding_stabilization > 0) commit_stabilization_energy_ += 0.5 * responses_[i].stabilization.squaredNorm() / p.sliding_stabilization * p.weight;
+    commit_point(mesh, state, i);
+  }
   double moved = 0;
   for (std::size_t n = 0; n < state.size(); ++n) moved = std::max(moved, (state[n].position - searched_positions_[n]).norm());
   const std::size_t committed = points_.size();
@@ -531,6 +548,7 @@ bool ContactSet::commit(const Mesh& mesh, const std::vector<NodeState>& state) {
   // Points the search just added (it only appends) get their stick points here, so that friction holds them from
   // their first increment.
   for (std::size_t i = committed; i < points_.size(); ++i) commit_point(mesh, state, i);
+  set_start_points(mesh, state);
   update_pattern_membership(true);
   // The pattern keeps pairs that are no longer needed until they are a sizeable share of it: each change costs
   // a new analysis and a fresh factorization, and under load cycles the same pairs come and go again.

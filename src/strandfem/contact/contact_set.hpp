@@ -87,6 +87,8 @@ class ContactSet final : public Interaction {
   void add_crossing(const Mesh& mesh, int element_a, int element_b, double xi, double eta);
   void set_point_properties(const Mesh& mesh, ContactPoint& p, const Vec3& reference_position);
   double sliding_stabilization(const ContactPoint& p) const;
+  // The stabilization's spring anchors (ContactPoint::start_a...) at the contact points of the last evaluation.
+  void set_start_points(const Mesh& mesh, const std::vector<NodeState>& state);
   void evaluate_point(const Mesh& mesh, const std::vector<NodeState>& state, int index, bool with_tangent,
                       ContactResponse& response) const;
   double initial_offset(const Mesh& mesh, const ContactPoint& p) const;

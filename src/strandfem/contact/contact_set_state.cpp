@@ -103,6 +103,7 @@ void ContactSet::restore_state(ArchiveReader& in, const Mesh& mesh, const std::v
   pairs_grew_ = false;
   responses_.assign(points_.size(), ContactResponse{});
   evaluate(mesh, state, false);  // the committed state's forces and statuses, for output
+  set_start_points(mesh, state);  // where the saved run's commit put them: the contact points of that state
 }
 
 }  // namespace strandfem

@@ -29,9 +29,9 @@ void ContactSettings::validate() const {
   }
   require_positive(orthotropy_ratio, "orthotropy_ratio");
   require_positive(elastic_slip, "elastic_slip");
-  if (!(frictionless_stabilization >= 0 && frictionless_stabilization < 1))
-    throw std::invalid_argument("contact.frictionless_stabilization must be in [0, 1) (a fraction of the normal penalty), got " +
-                                std::to_string(frictionless_stabilization));
+  if (!(stabilization >= 0 && stabilization < 1))
+    throw std::invalid_argument("contact.stabilization must be in [0, 1) (a fraction of the normal penalty), got " +
+                                std::to_string(stabilization));
   if (!(normal_smoothing >= 0)) throw std::invalid_argument("contact.normal_smoothing must be >= 0 (mm)");
   require_positive(search_margin, "search_margin");
   if (!(pattern_margin >= 0 && pattern_margin < 1)) throw std::invalid_argument("contact.pattern_margin must be in [0, 1)");

@@ -80,11 +80,11 @@ struct ContactSettings {
   // Width (mm) of the gap band |g| < s over which the normal force sets in smoothly (C1, quadratic), so that
   // contacts near zero force do not switch one by one; 0: the plain penalty law with the active set.
   double normal_smoothing = 0.0;
-  // Frictionless contacts only: a tangential spring of this fraction of the normal penalty, anchored where the
-  // point was at the last converged increment (so it resists the motion within an increment, like a viscous
-  // damper in load time). A frictionless strand has sideways modes held only by wire tension (S32 1 m: about
-  // 0.05 N/mm per mm of wire), along which Newton's corrections wander; 0: none.
-  double frictionless_stabilization = 0.0;
+  // Contact stabilization: a tangential spring of this fraction of the normal penalty at every contact point,
+  // anchored where the point was at the last converged increment, so that it resists only the motion within an
+  // increment (a damper in load time). Wires whose contacts slide freely (no friction, or eq. 2.6's sliding
+  // points) shift sideways held only by their tension, and Newton's corrections wander along those modes; 0: none.
+  double stabilization = 0.0;
 
   // Throws std::invalid_argument naming the contact.* key that is wrong.
   void validate() const;

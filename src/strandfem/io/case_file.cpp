@@ -602,7 +602,7 @@ CaseDefinition load_case(const std::string& path) {
                            {"elastic_slip", k.elastic_slip}, {"search_margin", k.search_margin}, {"pattern_margin", k.pattern_margin}, {"line_contact_angle", k.line_contact_angle},
                            {"line_points", k.line_points},
                            {"initial_overlap", k.initial_overlap == InitialOverlap::kOffset ? "offset" : "keep"}, {"touch_tolerance", k.touch_tolerance},
-                           {"normal_smoothing", k.normal_smoothing}, {"frictionless_stabilization", k.frictionless_stabilization},
+                           {"normal_smoothing", k.normal_smoothing}, {"stabilization", k.stabilization},
                            {"zones", k.zone_friction.size()}};
   // Each material pair with the coefficient and the mu2/mu1 it runs with (its own ratio or the contact's).
   nlohmann::json pairs = nlohmann::json::array();

@@ -28,7 +28,7 @@ ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Nod
                                        "normal_factor", "tangential_factor", "normal_multiplier", "tangential_multiplier",
                                        "search_margin", "line_contact_angle", "line_points", "initial_overlap", "touch_tolerance", "pattern_margin", "axis",
                                        "tangential_penalty", "elastic_slip", "normal_smoothing",
-                                       "frictionless_stabilization"});
+                                       "stabilization"});
   ContactSettings c;
   c.enabled = node["enabled"] ? reader.boolean(node["enabled"], "contact.enabled") : true;
   auto friction = [&](const YAML::Node& n, const std::string& path) {
@@ -79,10 +79,10 @@ ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Nod
   positive("elastic_slip", c.elastic_slip, "fraction of the contact element length");
   if (node["normal_smoothing"])
     c.normal_smoothing = reader.non_negative(node["normal_smoothing"], "contact.normal_smoothing", "mm");
-  if (const YAML::Node n = node["frictionless_stabilization"]) {
-    c.frictionless_stabilization = reader.non_negative(n, "contact.frictionless_stabilization", "fraction of the normal penalty");
-    if (c.frictionless_stabilization >= 1)
-      reader.fail(n, "contact.frictionless_stabilization", "expected a fraction of the normal penalty below 1 (e.g. 1e-6)");
+  if (const YAML::Node n = node["stabilization"]) {
+    c.stabilization = reader.non_negative(n, "contact.stabilization", "fraction of the normal penalty");
+    if (c.stabilization >= 1)
+      reader.fail(n, "contact.stabilization", "expected a fraction of the normal penalty below 1 (e.g. 1e-6)");
   }
   if (node["tangential_penalty"])
     c.tangential_penalty = reader.choice(node["tangential_penalty"], "contact.tangential_penalty", {"paper", "elastic_slip"}) == "paper"
