@@ -136,7 +136,8 @@ void evaluate_contact_into(const ContactPoint& point, const ElementPose<double>&
   for (int i = 0; i < 12; ++i)
     for (int c = 0; c < 3; ++c) r.force[3 * i + c] = f.nodal[i][c];
   if (!with_tangent) return;
-  // Rotations enter only through friction (surface stick points, moment arms): without it, translations suffice.
+  // Rotations enter only through friction or the stabilization (surface points, moment arms): without them,
+  // translations suffice.
   if (carries_tangential_force(point)) {
     const auto poses = lift_poses<36>(a, b);
     fill_tangent<36>(contact_forces(point, poses[0], poses[1], xi, eta, anchor, axis, pinned), r.tangent);
