@@ -475,11 +475,7 @@ void ContactSet::commit_point(const Mesh& mesh, const std::vector<NodeState>& st
     h.anchored = false;
     return;
   }
-  const double sa = wire_coordinate(p.element_a, r.xi), sb = wire_coordinate(r.element_b, r.eta);
-  // Section-fixed directions of the current contact point on both surfaces.
-  const auto [element_a, element_b] = elements_of(mesh, static_cast<int>(i));
-  const Vec3 direction_a = section_direction(pose(mesh, state, element_a), r.xi, -r.normal);
-  const Vec3 direction_b = section_direction(pose(mesh, state, element_b), r.eta, r.normal);
+  const auto [sa, sb, direction_a, direction_b] = surface_points(mesh, state, i);
   if (open || !h.anchored) {
     // An open point keeps its stick points where the two surfaces face each other now: if it closes within
     // the next increment, friction holds it from there at once (not one increment late).
@@ -508,18 +504,21 @@ void ContactSet::commit_point(const Mesh& mesh, const std::vector<NodeState>& st
   h.slip_direction = direction;
 }
 
+ContactSet::SurfacePoints ContactSet::surface_points(const Mesh& mesh, const std::vector<NodeState>& state, std::size_t i) const {
+  const ContactPoint& p = points_[i];
+  const ContactResponse& r = responses_[i];
+  const auto [element_a, element_b] = elements_of(mesh, static_cast<int>(i));
+  return {wire_coordinate(p.element_a, r.xi), wire_coordinate(r.element_b, r.eta),
+          section_direction(pose(mesh, state, element_a), r.xi, -r.normal),
+          section_direction(pose(mesh, state, element_b), r.eta, r.normal)};
+}
+
 void ContactSet::set_start_points(const Mesh& mesh, const std::vector<NodeState>& state) {
   if (!(settings_.stabilization > 0)) return;
   for (std::size_t i = 0; i < points_.size(); ++i) {
     ContactPoint& p = points_[i];
-    const ContactResponse& r = responses_[i];
-    p.start_set = r.element_b >= 0;
-    if (!p.start_set) continue;
-    const auto [element_a, element_b] = elements_of(mesh, static_cast<int>(i));
-    p.start_a = wire_coordinate(p.element_a, r.xi);
-    p.start_b = wire_coordinate(r.element_b, r.eta);
-    p.start_direction_a = section_direction(pose(mesh, state, element_a), r.xi, -r.normal);
-    p.start_direction_b = section_direction(pose(mesh, state, element_b), r.eta, r.normal);
+    p.start_set = responses_[i].element_b >= 0;
+    if (p.start_set) std::tie(p.start_a, p.start_b, p.start_direction_a, p.start_direction_b) = surface_points(mesh, state, i);
   }
 }
 

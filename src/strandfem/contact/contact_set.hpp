@@ -2,6 +2,7 @@
 #pragma once
 #include <array>
 #include <map>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -87,6 +88,10 @@ class ContactSet final : public Interaction {
   void add_crossing(const Mesh& mesh, int element_a, int element_b, double xi, double eta);
   void set_point_properties(const Mesh& mesh, ContactPoint& p, const Vec3& reference_position);
   double sliding_stabilization(const ContactPoint& p) const;
+  // Where point i touches both surfaces in its last evaluation (after commit_point has set its element):
+  // wire coordinates of slave and master and section-fixed directions, as stick and start points are stored.
+  using SurfacePoints = std::tuple<double, double, Vec3, Vec3>;
+  SurfacePoints surface_points(const Mesh& mesh, const std::vector<NodeState>& state, std::size_t i) const;
   // The stabilization's spring anchors (ContactPoint::start_a...) at the contact points of the last evaluation.
   void set_start_points(const Mesh& mesh, const std::vector<NodeState>& state);
   void evaluate_point(const Mesh& mesh, const std::vector<NodeState>& state, int index, bool with_tangent,
