@@ -70,14 +70,35 @@ steps:
   const std::string file = ::testing::TempDir() + "/orthotropy_pairs.yaml";
   std::ofstream(file) << YAML::Dump(with_ratio);
   const CaseDefinition c = load_case(file);
-  EXPECT_DOUBLE_EQ(c.model.contact_settings.orthotropy_at("steel", "steel"), 1.0);
-  EXPECT_DOUBLE_EQ(c.model.contact_settings.orthotropy_at("aluminum", "steel"), 15.0);
-  EXPECT_DOUBLE_EQ(c.model.contact_settings.orthotropy_at("aluminum", "aluminum"), 15.0);
+  constexpr ContactInterface radial = ContactInterface::kRadial;
+  EXPECT_DOUBLE_EQ(c.model.contact_settings.orthotropy_at("steel", "steel", radial), 1.0);
+  EXPECT_DOUBLE_EQ(c.model.contact_settings.orthotropy_at("aluminum", "steel", radial), 15.0);
+  EXPECT_DOUBLE_EQ(c.model.contact_settings.orthotropy_at("aluminum", "aluminum", radial), 15.0);
   const nlohmann::json& pairs = c.resolved["contact"]["pairs"];
   ASSERT_EQ(pairs.size(), 2u);
   EXPECT_DOUBLE_EQ(pairs[0]["orthotropy_ratio"].get<double>(), 1.0);
   EXPECT_DOUBLE_EQ(pairs[1]["orthotropy_ratio"].get<double>(), 15.0);
   EXPECT_DOUBLE_EQ(pairs[1]["mu"].get<double>(), 0.4);
+  EXPECT_EQ(pairs[1]["contacts"], "all");
+}
+
+// A friction_pairs entry limited to lateral contacts that sets only a ratio (Fig. 19 with the orthotropy on the
+// radial aluminum contacts alone): the results' configuration gives the coefficient it runs with, the contact's.
+TEST(CaseVariant, PairEntryLimitedToLateralContacts) {
+  const std::string text = set_case_key(std::string(kCase) + R"(materials:
+  steel: {E: 200000, nu: 0.3}
+steps:
+  - {name: pull, increments: 1, axial_strain: 0.001}
+)", "contact", "{friction: 0.7, orthotropy_ratio: 15, friction_pairs: [{materials: [steel, steel], contacts: lateral, orthotropy_ratio: 1}]}");
+  const std::string file = ::testing::TempDir() + "/lateral_pair.yaml";
+  std::ofstream(file) << set_case_key(set_case_key(text, "strand.layers.0.material", "steel"), "strand.layers.1.material", "steel");
+  const CaseDefinition c = load_case(file);
+  const nlohmann::json& pair = c.resolved["contact"]["pairs"][0];
+  EXPECT_EQ(pair["contacts"], "lateral");
+  EXPECT_DOUBLE_EQ(pair["mu"].get<double>(), 0.7);
+  EXPECT_DOUBLE_EQ(pair["orthotropy_ratio"].get<double>(), 1.0);
+  EXPECT_FALSE(pair.contains("radial"));
+  EXPECT_DOUBLE_EQ(c.model.contact_settings.orthotropy_at("steel", "steel", ContactInterface::kRadial), 15.0);
 }
 
 }  // namespace

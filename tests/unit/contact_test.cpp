@@ -111,31 +111,70 @@ void set_stick(ContactPoint& p, const PairFixture& f, double offset, double turn
 
 // Friction coefficient lookup: zones over material pairs over the default; pairs in either order.
 TEST(ContactSettings, FrictionPerMaterialPairAndAxialZone) {
+  constexpr ContactInterface lateral = ContactInterface::kLateral;
   ContactSettings s;
   s.friction = 0.1;
   s.pair_friction = {{"steel", "aluminum", 0.5}};
   s.zone_friction = {{0.0, 20.0, 0.9}};
-  EXPECT_DOUBLE_EQ(s.friction_at("steel", "steel", 50), 0.1);
-  EXPECT_DOUBLE_EQ(s.friction_at("aluminum", "steel", 50), 0.5);
-  EXPECT_DOUBLE_EQ(s.friction_at("steel", "aluminum", 50), 0.5);
-  EXPECT_DOUBLE_EQ(s.friction_at("steel", "steel", 10), 0.9);
-  EXPECT_DOUBLE_EQ(s.friction_at("steel", "aluminum", 20), 0.9);
+  EXPECT_DOUBLE_EQ(s.friction_at("steel", "steel", lateral, 50), 0.1);
+  EXPECT_DOUBLE_EQ(s.friction_at("aluminum", "steel", lateral, 50), 0.5);
+  EXPECT_DOUBLE_EQ(s.friction_at("steel", "aluminum", lateral, 50), 0.5);
+  EXPECT_DOUBLE_EQ(s.friction_at("steel", "steel", lateral, 10), 0.9);
+  EXPECT_DOUBLE_EQ(s.friction_at("steel", "aluminum", lateral, 20), 0.9);
   // A zone limited to aluminum contacts (the paper's section 5.2): steel-steel keeps its coefficient there.
   s.zone_friction = {{0.0, 20.0, 0.7, {{"aluminum", "aluminum"}, {"aluminum", "steel"}}}};
-  EXPECT_DOUBLE_EQ(s.friction_at("steel", "steel", 10), 0.1);
-  EXPECT_DOUBLE_EQ(s.friction_at("steel", "aluminum", 10), 0.7);
-  EXPECT_DOUBLE_EQ(s.friction_at("aluminum", "aluminum", 10), 0.7);
-  EXPECT_DOUBLE_EQ(s.friction_at("aluminum", "aluminum", 30), 0.1);
+  EXPECT_DOUBLE_EQ(s.friction_at("steel", "steel", lateral, 10), 0.1);
+  EXPECT_DOUBLE_EQ(s.friction_at("steel", "aluminum", lateral, 10), 0.7);
+  EXPECT_DOUBLE_EQ(s.friction_at("aluminum", "aluminum", lateral, 10), 0.7);
+  EXPECT_DOUBLE_EQ(s.friction_at("aluminum", "aluminum", lateral, 30), 0.1);
+}
+
+// The paper's two interfaces (section 2.2): lateral within a layer and from the core to the first layer, radial
+// between two helical layers.
+TEST(ContactSettings, LateralAndRadialInterfaces) {
+  EXPECT_EQ(contact_interface(2, 2), ContactInterface::kLateral);
+  EXPECT_EQ(contact_interface(0, 1), ContactInterface::kLateral);
+  EXPECT_EQ(contact_interface(1, 0), ContactInterface::kLateral);
+  EXPECT_EQ(contact_interface(1, 2), ContactInterface::kRadial);
+  EXPECT_EQ(contact_interface(4, 3), ContactInterface::kRadial);
+  EXPECT_EQ(contact_interface(-1, -1), ContactInterface::kLateral);  // beam lines outside a strand
+}
+
+// Section 5.2 changes mu_a on the radial aluminum contacts only: a zone limited to radial contacts leaves the
+// lateral ones at their pair's coefficient, and a pair entry limited to one interface leaves the other alone.
+TEST(ContactSettings, ZonesAndPairsLimitedToAnInterface) {
+  constexpr ContactInterface lateral = ContactInterface::kLateral, radial = ContactInterface::kRadial;
+  ContactSettings s;
+  s.friction = 0.5;
+  s.pair_friction = {{"steel", "steel", 0.3}};
+  s.zone_friction = {{0.0, 100.0, 0.9, {{"aluminum", "aluminum"}}, radial}};
+  EXPECT_DOUBLE_EQ(s.friction_at("aluminum", "aluminum", radial, 50), 0.9);
+  EXPECT_DOUBLE_EQ(s.friction_at("aluminum", "aluminum", lateral, 50), 0.5);
+  EXPECT_DOUBLE_EQ(s.friction_at("aluminum", "aluminum", radial, 150), 0.5);
+  s.pair_friction.push_back({"steel", "aluminum", 0.4, std::nullopt, lateral});
+  EXPECT_DOUBLE_EQ(s.friction_at("aluminum", "steel", lateral, 150), 0.4);
+  EXPECT_DOUBLE_EQ(s.friction_at("aluminum", "steel", radial, 150), 0.5);
+  EXPECT_NO_THROW(s.validate());
+  s.pair_friction.push_back({"aluminum", "aluminum", std::nullopt, std::nullopt, radial});
+  EXPECT_THROW(s.validate(), std::invalid_argument);  // an entry that sets nothing
 }
 
 // mu2 / mu1 per material pair over the contact's ratio (Fig. 19: aluminum contacts orthotropic, steel pairs not).
 TEST(ContactSettings, OrthotropyPerMaterialPair) {
+  constexpr ContactInterface lateral = ContactInterface::kLateral, radial = ContactInterface::kRadial;
   ContactSettings s;
   s.orthotropy_ratio = 10;
   s.pair_friction = {{"steel", "steel", 0.3, 1.0}, {"steel", "aluminum", 0.5}};
-  EXPECT_DOUBLE_EQ(s.orthotropy_at("steel", "steel"), 1.0);
-  EXPECT_DOUBLE_EQ(s.orthotropy_at("aluminum", "steel"), 10.0);  // an entry without a ratio takes the contact's
-  EXPECT_DOUBLE_EQ(s.orthotropy_at("aluminum", "aluminum"), 10.0);
+  EXPECT_DOUBLE_EQ(s.orthotropy_at("steel", "steel", radial), 1.0);
+  EXPECT_DOUBLE_EQ(s.orthotropy_at("aluminum", "steel", radial), 10.0);  // an entry without a ratio takes the contact's
+  EXPECT_DOUBLE_EQ(s.orthotropy_at("aluminum", "aluminum", radial), 10.0);
+  // The paper defines direction 2 at the radial contact points: lateral aluminum contacts kept isotropic by an
+  // entry that sets only their ratio; their coefficient stays the contact's.
+  s.pair_friction.push_back({"aluminum", "aluminum", std::nullopt, 1.0, lateral});
+  EXPECT_DOUBLE_EQ(s.orthotropy_at("aluminum", "aluminum", lateral), 1.0);
+  EXPECT_DOUBLE_EQ(s.orthotropy_at("aluminum", "aluminum", radial), 10.0);
+  s.friction = 0.7;
+  EXPECT_DOUBLE_EQ(s.friction_at("aluminum", "aluminum", lateral, 0), 0.7);
   s.pair_friction[0].orthotropy_ratio = -1;
   EXPECT_THROW(s.validate(), std::invalid_argument);
 }

@@ -50,6 +50,53 @@ TEST(MultilayerProgram, NineteenWireConvergesWithBothTangentialPenalties) {
   EXPECT_NEAR(paper_slope / elastic_slope, 1.0, 0.01);
 }
 
+// Friction limited to one interface (the paper's sections 5.2 and 5.3 change the radial contacts only): on the
+// 19-wire strand a zone of mu 0.4 over z <= 30 mm on the radial contacts and mu2/mu1 = 5 everywhere but on the
+// lateral ones. contacts.csv names each point's interface and the coefficients it runs with.
+TEST(MultilayerProgram, FrictionZonesAndOrthotropyLimitedToRadialContacts) {
+  std::ifstream in(case_path("cases/paper/axial/strand_19.yaml"));
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string limited = std::regex_replace(
+      text.str(), std::regex("contact: \\{friction: 0.115\\}"),
+      "contact: {friction: 0.2, orthotropy_ratio: 5,\n"
+      "  friction_pairs: [{materials: [steel, steel], contacts: lateral, orthotropy_ratio: 1}],\n"
+      "  friction_zones: [{z: [0, 30], mu: 0.4, contacts: radial}]}");
+  ASSERT_NE(limited, text.str());
+  const std::string file = ::testing::TempDir() + "/strand_19_interfaces.yaml";
+  std::ofstream(file) << std::regex_replace(limited, std::regex("increments: 8, axial_strain: 0.004"),
+                                            "increments: 1, axial_strain: 0.0005");
+  const auto results = std::filesystem::path(::testing::TempDir()) / "strandfem_interfaces" / "results";
+  const ProgramRun run = run_program("run " + file + " -q -o " + results.string(), "interfaces");
+  ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
+  const auto file_csv = run.output / "results" / "contacts.csv";
+  const auto rows = read_csv(file_csv);
+  const auto interfaces = read_csv_text(file_csv, "interface");
+  ASSERT_EQ(rows.size(), interfaces.size());
+  int lateral = 0, radial_in_zone = 0, radial_outside = 0;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const auto& r = rows[i];
+    const bool radial = r.at("layer_a") >= 1 && r.at("layer_b") >= 1 && r.at("layer_a") != r.at("layer_b");
+    EXPECT_EQ(interfaces[i], radial ? "radial" : "lateral") << "row " << i;
+    if (!radial) {
+      ++lateral;
+      EXPECT_DOUBLE_EQ(r.at("mu1"), 0.2) << "row " << i;
+      EXPECT_DOUBLE_EQ(r.at("mu2"), 0.2) << "row " << i;
+    } else if (r.at("z_mm") < 29) {
+      ++radial_in_zone;
+      EXPECT_DOUBLE_EQ(r.at("mu1"), 0.4) << "row " << i;
+      EXPECT_DOUBLE_EQ(r.at("mu2"), 2.0) << "row " << i;
+    } else if (r.at("z_mm") > 31) {
+      ++radial_outside;
+      EXPECT_DOUBLE_EQ(r.at("mu1"), 0.2) << "row " << i;
+      EXPECT_DOUBLE_EQ(r.at("mu2"), 1.0) << "row " << i;
+    }
+  }
+  EXPECT_GT(lateral, 0);
+  EXPECT_GT(radial_in_zone, 0);
+  EXPECT_GT(radial_outside, 0);
+}
+
 // The 19-wire strand with `extra` appended to its case file (a solver block), run into a folder named by `tag`.
 ProgramRun run_strand_19_with(const std::string& extra, const std::string& tag) {
   std::ifstream in(case_path("cases/paper/axial/strand_19.yaml"));

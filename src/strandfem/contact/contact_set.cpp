@@ -318,8 +318,9 @@ void ContactSet::set_point_properties(const Mesh& mesh, ContactPoint& p, const V
   const double modulus = std::min(sa.material().youngs_modulus, sb.material().youngs_modulus);
   const double diameter = 2.0 * std::min(p.radius_a, p.radius_b);
   const double element_size = arc_length(centerline(mesh, reference_, mesh.wires[p.wire_a].elements[p.element_a]));
-  p.mu1 = settings_.friction_at(sa.material().name, sb.material().name, reference_position.dot(settings_.strand_axis));
-  p.mu2 = p.mu1 * settings_.orthotropy_at(sa.material().name, sb.material().name);
+  const ContactInterface interface = contact_interface(mesh.wires[p.wire_a].layer, mesh.wires[p.wire_b].layer);
+  p.mu1 = settings_.friction_at(sa.material().name, sb.material().name, interface, reference_position.dot(settings_.strand_axis));
+  p.mu2 = p.mu1 * settings_.orthotropy_at(sa.material().name, sb.material().name, interface);
   p.stiffness = penalty_stiffness(settings_, p.kind == ContactKind::kLine, modulus, diameter, element_size, p.mu1);
   p.allowed_slip = settings_.tangential_penalty == TangentialPenalty::kElasticSlip ? settings_.elastic_slip * element_size : 0.0;
   p.sliding_stabilization = sliding_stabilization(p);

@@ -1,5 +1,6 @@
 #include "strandfem/contact/contact_settings.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace strandfem {
@@ -20,7 +21,9 @@ void ContactSettings::validate() const {
   require_positive(tangential_multiplier, "tangential_multiplier");
   require_friction(friction, "friction");
   for (const auto& p : pair_friction) {
-    require_friction(p.coefficient, "friction_pairs[].mu");
+    if (p.coefficient) require_friction(*p.coefficient, "friction_pairs[].mu");
+    if (!p.coefficient && !p.orthotropy_ratio)
+      throw std::invalid_argument("contact.friction_pairs[] must set mu, orthotropy_ratio or both");
     if (p.orthotropy_ratio) require_positive(*p.orthotropy_ratio, "friction_pairs[].orthotropy_ratio");
   }
   for (const auto& z : zone_friction) {
@@ -48,24 +51,41 @@ bool same_pair(const std::string& a, const std::string& b, const std::string& ma
 }
 }  // namespace
 
-bool FrictionZone::applies_to(const std::string& material_a, const std::string& material_b) const {
+const char* to_string(ContactInterface interface) { return interface == ContactInterface::kRadial ? "radial" : "lateral"; }
+
+ContactInterface contact_interface(int layer_a, int layer_b) {
+  return layer_a != layer_b && std::min(layer_a, layer_b) >= 1 ? ContactInterface::kRadial : ContactInterface::kLateral;
+}
+
+bool MaterialPairFriction::applies_to(const std::string& a, const std::string& b, ContactInterface on) const {
+  return same_pair(material_a, material_b, a, b) && (!interface || *interface == on);
+}
+
+bool FrictionZone::applies_to(const std::string& material_a, const std::string& material_b, ContactInterface on) const {
+  if (interface && *interface != on) return false;
   if (material_pairs.empty()) return true;
   for (const auto& [a, b] : material_pairs)
     if (same_pair(a, b, material_a, material_b)) return true;
   return false;
 }
 
-double ContactSettings::friction_at(const std::string& material_a, const std::string& material_b, double z) const {
+double ContactSettings::friction_at(const std::string& material_a, const std::string& material_b, ContactInterface on,
+                                    double z) const {
   for (const FrictionZone& zone : zone_friction)
-    if (z >= zone.z_min && z <= zone.z_max && zone.applies_to(material_a, material_b)) return zone.coefficient;
+    if (z >= zone.z_min && z <= zone.z_max && zone.applies_to(material_a, material_b, on)) return zone.coefficient;
+  return friction_outside_zones(material_a, material_b, on);
+}
+
+double ContactSettings::friction_outside_zones(const std::string& material_a, const std::string& material_b,
+                                               ContactInterface on) const {
   for (const MaterialPairFriction& p : pair_friction)
-    if (same_pair(p.material_a, p.material_b, material_a, material_b)) return p.coefficient;
+    if (p.coefficient && p.applies_to(material_a, material_b, on)) return *p.coefficient;
   return friction;
 }
 
-double ContactSettings::orthotropy_at(const std::string& material_a, const std::string& material_b) const {
+double ContactSettings::orthotropy_at(const std::string& material_a, const std::string& material_b, ContactInterface on) const {
   for (const MaterialPairFriction& p : pair_friction)
-    if (same_pair(p.material_a, p.material_b, material_a, material_b)) return p.orthotropy_ratio.value_or(orthotropy_ratio);
+    if (p.orthotropy_ratio && p.applies_to(material_a, material_b, on)) return *p.orthotropy_ratio;
   return orthotropy_ratio;
 }
 

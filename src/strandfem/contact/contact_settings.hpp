@@ -10,13 +10,24 @@
 
 namespace strandfem {
 
-// Friction coefficient for one pair of materials (order does not matter).
+// The paper's two kinds of wire contact (section 2.2, Fig. 2): lateral between wires of one layer and between the
+// core and the first layer, radial between wires of two adjacent helical layers.
+enum class ContactInterface { kLateral, kRadial };
+const char* to_string(ContactInterface interface);
+// The interface of a contact between wires of layers layer_a and layer_b (0 = core).
+ContactInterface contact_interface(int layer_a, int layer_b);
+
+// Friction for one pair of materials (order does not matter), optionally only on one interface.
 struct MaterialPairFriction {
   std::string material_a, material_b;
-  double coefficient = 0;
+  // none: the entry sets only the ratio, the coefficient comes from the next rule (contact.friction).
+  std::optional<double> coefficient;
   // mu2 / mu1 for this pair; none: the contact's orthotropy_ratio. The paper's Fig. 19 makes the aluminum contacts
   // orthotropic and keeps steel-steel and steel-aluminum at their isotropic 0.3 and 0.5.
   std::optional<double> orthotropy_ratio;
+  // none: lateral and radial contacts alike.
+  std::optional<ContactInterface> interface;
+  bool applies_to(const std::string& a, const std::string& b, ContactInterface on) const;
 };
 
 // Friction coefficient on an axial band z_min <= z <= z_max (multi-level model, paper section 5.2).
@@ -26,7 +37,9 @@ struct FrictionZone {
   double coefficient = 0;
   // Material pairs the zone applies to (the paper's section 5.2 changes aluminum contacts only); empty: all.
   std::vector<std::pair<std::string, std::string>> material_pairs;
-  bool applies_to(const std::string& material_a, const std::string& material_b) const;
+  // none: lateral and radial contacts alike (section 5.2 changes the radial ones only).
+  std::optional<ContactInterface> interface;
+  bool applies_to(const std::string& material_a, const std::string& material_b, ContactInterface on) const;
 };
 
 // What to do with overlaps present in the nominal (reference) geometry.
@@ -88,10 +101,13 @@ struct ContactSettings {
 
   // Throws std::invalid_argument naming the contact.* key that is wrong.
   void validate() const;
-  // Coefficient for the materials of the two wires at axial position z.
-  double friction_at(const std::string& material_a, const std::string& material_b, double z) const;
-  // mu2 / mu1 for a pair of materials: its friction_pairs entry's ratio if it sets one, else orthotropy_ratio.
-  double orthotropy_at(const std::string& material_a, const std::string& material_b) const;
+  // Coefficient for the materials of the two wires on the given interface at axial position z: the first zone
+  // that applies, else the first friction_pairs entry that applies and sets mu, else friction.
+  double friction_at(const std::string& material_a, const std::string& material_b, ContactInterface on, double z) const;
+  // The same outside every zone.
+  double friction_outside_zones(const std::string& material_a, const std::string& material_b, ContactInterface on) const;
+  // mu2 / mu1: the first friction_pairs entry that applies and sets a ratio, else orthotropy_ratio.
+  double orthotropy_at(const std::string& material_a, const std::string& material_b, ContactInterface on) const;
 };
 
 // Penalty stiffnesses of a contact point (eqs. 2.5-2.6).

@@ -604,11 +604,26 @@ CaseDefinition load_case(const std::string& path) {
                            {"initial_overlap", k.initial_overlap == InitialOverlap::kOffset ? "offset" : "keep"}, {"touch_tolerance", k.touch_tolerance},
                            {"normal_smoothing", k.normal_smoothing}, {"stabilization", k.stabilization},
                            {"zones", k.zone_friction.size()}};
-  // Each material pair with the coefficient and the mu2/mu1 it runs with (its own ratio or the contact's).
+  // Each material pair with the coefficient and the mu2/mu1 it runs with (outside zones) on the interfaces it
+  // names; mu and orthotropy_ratio also at the top where they are the same on all of them.
   nlohmann::json pairs = nlohmann::json::array();
-  for (const MaterialPairFriction& p : k.pair_friction)
-    pairs.push_back({{"materials", {p.material_a, p.material_b}}, {"mu", p.coefficient},
-                     {"orthotropy_ratio", k.orthotropy_at(p.material_a, p.material_b)}});
+  for (const MaterialPairFriction& p : k.pair_friction) {
+    nlohmann::json entry = {{"materials", {p.material_a, p.material_b}},
+                            {"contacts", p.interface ? to_string(*p.interface) : "all"}};
+    std::vector<std::pair<double, double>> values;
+    for (ContactInterface on : {ContactInterface::kLateral, ContactInterface::kRadial}) {
+      if (p.interface && *p.interface != on) continue;
+      const double mu = k.friction_outside_zones(p.material_a, p.material_b, on);
+      const double ratio = k.orthotropy_at(p.material_a, p.material_b, on);
+      entry[to_string(on)] = {{"mu", mu}, {"orthotropy_ratio", ratio}};
+      values.emplace_back(mu, ratio);
+    }
+    if (values.size() == 1 || values[0] == values[1]) {
+      entry["mu"] = values[0].first;
+      entry["orthotropy_ratio"] = values[0].second;
+    }
+    pairs.push_back(entry);
+  }
   c.resolved["contact"]["pairs"] = pairs;
   return c;
 }

@@ -36,17 +36,26 @@ ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Nod
     if (mu >= 10) reader.fail(n, path, "expected a friction coefficient below 10");
     return mu;
   };
+  // The interface an entry is limited to (paper section 2.2): none, lateral or radial contacts alone.
+  auto interface = [&](const YAML::Node& entry, const std::string& path) -> std::optional<ContactInterface> {
+    const YAML::Node n = entry["contacts"];
+    if (!n) return std::nullopt;
+    return reader.choice(n, path + ".contacts", {"lateral", "radial"}) == "radial" ? ContactInterface::kRadial
+                                                                                 : ContactInterface::kLateral;
+  };
   if (node["friction"]) c.friction = friction(node["friction"], "contact.friction");
   if (const YAML::Node pairs = node["friction_pairs"]) {
     if (!pairs.IsSequence()) reader.fail(pairs, "contact.friction_pairs", "expected a list of {materials: [a, b], mu}");
     for (std::size_t i = 0; i < pairs.size(); ++i) {
       const std::string path = at("contact.friction_pairs", i);
-      reader.check_keys(pairs[i], path, {"materials", "mu", "orthotropy_ratio"});
+      reader.check_keys(pairs[i], path, {"materials", "mu", "orthotropy_ratio", "contacts"});
       MaterialPairFriction f;
       std::tie(f.material_a, f.material_b) =
           material_pair(reader, reader.require(pairs[i], path, "materials"), path + ".materials", materials, "expected two material names");
-      f.coefficient = friction(reader.require(pairs[i], path, "mu"), path + ".mu");
+      if (pairs[i]["mu"]) f.coefficient = friction(pairs[i]["mu"], path + ".mu");
       if (pairs[i]["orthotropy_ratio"]) f.orthotropy_ratio = reader.positive(pairs[i]["orthotropy_ratio"], path + ".orthotropy_ratio", "-");
+      if (!f.coefficient && !f.orthotropy_ratio) reader.fail(pairs[i], path, "expected 'mu', 'orthotropy_ratio' or both");
+      f.interface = interface(pairs[i], path);
       c.pair_friction.push_back(f);
     }
   }
@@ -54,10 +63,10 @@ ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Nod
     if (!zones.IsSequence()) reader.fail(zones, "contact.friction_zones", "expected a list of {z: [z_min, z_max], mu}");
     for (std::size_t i = 0; i < zones.size(); ++i) {
       const std::string path = at("contact.friction_zones", i);
-      reader.check_keys(zones[i], path, {"z", "mu", "materials"});
+      reader.check_keys(zones[i], path, {"z", "mu", "materials", "contacts"});
       const auto z = reader.numbers(reader.require(zones[i], path, "z"), path + ".z", 2);
       if (!(z[1] > z[0])) reader.fail(zones[i]["z"], path + ".z", "expected [z_min, z_max] with z_max > z_min (mm)");
-      FrictionZone zone{z[0], z[1], friction(reader.require(zones[i], path, "mu"), path + ".mu"), {}};
+      FrictionZone zone{z[0], z[1], friction(reader.require(zones[i], path, "mu"), path + ".mu"), {}, interface(zones[i], path)};
       if (const YAML::Node pairs = zones[i]["materials"]) {
         const std::string expected = "expected a list of material pairs, e.g. [[aluminum, aluminum], [aluminum, steel]]";
         if (!pairs.IsSequence() || pairs.size() == 0) reader.fail(pairs, path + ".materials", expected);

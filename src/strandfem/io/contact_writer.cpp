@@ -16,7 +16,8 @@ ContactWriter::ContactWriter(std::filesystem::path directory, const CaseDefiniti
   csv_.open(directory_ / "contacts.csv");
   // Line contacts carry forces per unit length (N/mm), point contacts forces (N): see force_unit.
   csv_.stream() << "step,increment,load_factor,kind,wire_a,wire_b,layer_a,layer_b,element_a,element_b,xi,eta,x_mm,y_mm,z_mm,"
-          "angle_deg,gap_mm,normal_force,q1,q2,force_unit,status,slip_mm,slip_since_reversal_mm,dissipated_energy_Nmm\n";
+          "angle_deg,gap_mm,normal_force,q1,q2,force_unit,status,slip_mm,slip_since_reversal_mm,dissipated_energy_Nmm,"
+          "interface,mu1,mu2\n";
   csv_.end_row();
 }
 
@@ -44,12 +45,14 @@ void ContactWriter::on_increment(const StaticAnalysis& analysis, const Increment
     const ContactResponse& r = contacts.responses()[i];
     if (r.status == ContactStatus::kOpen) continue;
     const Vec3& x = r.position;
-    csv_.stream() << fmt::format("{},{},{:.8g},{},{},{},{},{},{},{},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.4f},{:.6e},{:.6e},{:.6e},{:.6e},{},{},{:.6e},{:.6e},{:.6e}\n",
+    csv_.stream() << fmt::format("{},{},{:.8g},{},{},{},{},{},{},{},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.4f},{:.6e},{:.6e},{:.6e},{:.6e},{},{},{:.6e},{:.6e},{:.6e},{},{:.6g},{:.6g}\n",
                         report.step + 1, report.increment, load_factor, to_string(p.kind), p.wire_a, p.wire_b,
                         model.mesh.wires[p.wire_a].layer, model.mesh.wires[p.wire_b].layer, p.element_a, r.element_b, r.xi,
                         r.eta, x.x(), x.y(), x.z(), std::atan2(x.y(), x.x()) * 180.0 / M_PI, r.gap, r.normal_force, r.q1,
                         r.q2, p.kind == ContactKind::kLine ? "N/mm" : "N", to_string(r.status), p.history.slip,
-                        p.history.slip_since_reversal, p.history.dissipated_energy);
+                        p.history.slip_since_reversal, p.history.dissipated_energy,
+                        to_string(contact_interface(model.mesh.wires[p.wire_a].layer, model.mesh.wires[p.wire_b].layer)),
+                        p.mu1, p.mu2);
     csv_.end_row();
   }
 }
