@@ -183,5 +183,29 @@ TEST(Resume, RefusesTheCheckpointOfAnotherCase) {
   EXPECT_EQ(read_csv(results / "history.csv").size(), 2u);
 }
 
+// contacts.csv gained three columns with checkpoint format 4: a run that writes it does not continue the rows of a
+// checkpoint of format 3, and the stopped run's results stay as they were.
+TEST(Resume, RefusesAnEarlierFormatWhoseContactRowsHaveFewerColumns) {
+  const ProgramRun first = run_case(kCase, "resume_format", "--stop-after 2");
+  ASSERT_EQ(first.exit_code, 5) << first.stderr_text;
+  const std::filesystem::path results = first.output / "results";
+  {
+    // The format version follows the magic string (its 8-byte length and 20 characters).
+    std::fstream checkpoint(results / "checkpoint.bin", std::ios::in | std::ios::out | std::ios::binary);
+    checkpoint.seekg(28);
+    int version = 0;
+    checkpoint.read(reinterpret_cast<char*>(&version), sizeof version);
+    ASSERT_EQ(version, 4);
+    version = 3;
+    checkpoint.seekp(28);
+    checkpoint.write(reinterpret_cast<const char*>(&version), sizeof version);
+  }
+  const ProgramRun resumed = run_program("run " + case_path(kCase) + " -q -o " + results.string() + " --resume",
+                                         "resume_format_again");
+  EXPECT_EQ(resumed.exit_code, 2);
+  EXPECT_NE(resumed.stderr_text.find("another version"), std::string::npos) << resumed.stderr_text;
+  EXPECT_EQ(read_csv(results / "history.csv").size(), 2u);
+}
+
 }  // namespace
 }  // namespace strandfem::verification

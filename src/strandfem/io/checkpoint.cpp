@@ -90,8 +90,9 @@ ArchiveReader open_checkpoint(const std::filesystem::path& directory, const Case
   }
   const int version = reader.value<int>();
   const bool writes_contacts = c.model.contact_settings.enabled && c.output.contacts;
-  if (version != kFormatVersion && !(version == 3 && !writes_contacts) && !(version == 2 && !writes_contacts) &&
-      !(version == 1 && !has_cyclic_strand_step(c) && !writes_contacts))
+  const bool readable = version >= 1 && version <= kFormatVersion && !(version < 4 && writes_contacts) &&
+                        !(version == 1 && has_cyclic_strand_step(c));
+  if (!readable)
     throw ArchiveError(path.string() + " was written by another version of StrandFEM (checkpoint format differs)");
   const std::string another_case =
       path.string() + " was written for another case, or this case file changed since: resume needs the same case";
