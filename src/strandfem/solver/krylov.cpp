@@ -11,9 +11,45 @@ constexpr int kIterationsBeforeProjection = 4;
 
 void multiply(const SparsePattern& pattern, const std::vector<double>& values, const std::vector<double>& x,
               std::vector<double>& y) {
-  y.assign(pattern.size, 0.0);
-  for (int c = 0; c < pattern.size; ++c)
-    for (int k = pattern.column_start[c]; k < pattern.column_start[c + 1]; ++k) y[pattern.row_index[k]] += values[k] * x[c];
+  ColumnChunkedProduct(pattern).apply(values, x, y);
+}
+
+ColumnChunkedProduct::ColumnChunkedProduct(const SparsePattern& pattern) : pattern_(pattern) {
+  // Chunks of about equal entry counts; their number is fixed, so the sums do not depend on the thread count.
+  const long long entries = pattern.column_start.empty() ? 0 : pattern.column_start[pattern.size];
+  chunk_start_.assign(kChunks + 1, pattern.size);
+  chunk_start_[0] = 0;
+  int c = 0;
+  for (int k = 1; k < kChunks; ++k) {
+    while (c < pattern.size && pattern.column_start[c] < entries * k / kChunks) ++c;
+    chunk_start_[k] = c;
+  }
+  partial_.assign(kChunks, std::vector<double>(pattern.size));
+}
+
+void ColumnChunkedProduct::apply(const std::vector<double>& values, const std::vector<double>& x,
+                                 std::vector<double>& y) {
+  const SparsePattern& p = pattern_;
+  const int n = p.size;
+  y.resize(n);
+#pragma omp parallel
+  {
+#pragma omp for schedule(static, 1)
+    for (int k = 0; k < kChunks; ++k) {
+      std::vector<double>& part = partial_[k];
+      std::fill(part.begin(), part.end(), 0.0);
+      for (int c = chunk_start_[k]; c < chunk_start_[k + 1]; ++c) {
+        const double xc = x[c];
+        for (int e = p.column_start[c]; e < p.column_start[c + 1]; ++e) part[p.row_index[e]] += values[e] * xc;
+      }
+    }
+#pragma omp for schedule(static)
+    for (int r = 0; r < n; ++r) {
+      double sum = 0;
+      for (int k = 0; k < kChunks; ++k) sum += partial_[k][r];
+      y[r] = sum;
+    }
+  }
 }
 
 KrylovResult gmres(const SparsePattern& pattern, const std::vector<double>& values,
@@ -39,12 +75,13 @@ KrylovResult gmres(const SparsePattern& pattern, const std::vector<double>& valu
   // Flexible GMRES keeps z_k = M^-1 v_k and builds x from them: a single-precision preconditioner rounds its
   // input, so it is not exactly linear and M^-1 (V y) would differ from Z y by that rounding.
   std::vector<Vector> preconditioned;
+  ColumnChunkedProduct product_of(pattern);
   int k = 0;
   for (; k < max_iterations; ++k) {
     Eigen::Map<Vector>(work.data(), n) = basis[k];
     precondition(work);
     preconditioned.push_back(Eigen::Map<const Vector>(work.data(), n));
-    multiply(pattern, values, work, product);
+    product_of.apply(values, work, product);
     Vector w = Eigen::Map<const Vector>(product.data(), n);
     for (int j = 0; j <= k; ++j) {
       hessenberg(j, k) = w.dot(basis[j]);
