@@ -70,6 +70,10 @@ class MumpsSolver final : public LinearSolver {
     // (INFOG(7) = 2 or 3). So the METIS nested dissection is computed here and handed over as the pivot order.
     id_.icntl[6] = kUserOrdering;
     id_.icntl[13] = 50;  // ICNTL(14): 50 % working-space relaxation
+    // Single-precision factors only precondition GMRES: the diagonal scaling (ICNTL(8) = 1) serves them as well
+    // as the iterative row and column scaling MUMPS picks by default (7), which costs about a tenth of each
+    // factorization on the S32 tangent and runs on one thread (docs/performance.md, session 38).
+    if (kSingle) id_.icntl[7] = 1;
   }
   ~MumpsSolver() override {
     id_.job = -2;
