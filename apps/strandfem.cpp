@@ -58,8 +58,12 @@ void draw_plots(const std::string& output_dir) {
 }
 
 int run_case_file(const std::string& case_path, const std::string& output_dir, int threads, bool quiet, bool verbose,
-             bool plots, bool resume, int stop_after) {
+             bool plots, bool resume, int stop_after, int dump_tangent = 0) {
   strandfem::CaseDefinition c = strandfem::load_case(case_path);
+  if (dump_tangent > 0) {
+    c.model.options.dump_tangent_factorization = dump_tangent;
+    c.model.options.dump_tangent_path = (std::filesystem::path(output_dir) / ("tangent_" + std::to_string(dump_tangent) + ".bin")).string();
+  }
   for (const auto& w : c.warnings) std::cerr << "warning: " << w << "\n";
   const bool from_command_line = threads > 0;
   c.model.options.threads = resolve_threads(from_command_line ? threads : c.model.options.threads,
@@ -191,7 +195,7 @@ int main(int argc, char** argv) {
   CLI::App app{"StrandFEM: finite elements for multilayered helical wire strands"};
   app.require_subcommand(1);
   std::string case_path, output_dir = "results";
-  int threads = 0, stop_after = 0;
+  int threads = 0, stop_after = 0, dump_tangent = 0;
   bool quiet = false, verbose = false, plots = false, resume = false;
   auto* run = app.add_subcommand("run", "Solve a case and write its results folder");
   run->add_option("case", case_path, "Case file (YAML)")->required();
@@ -203,6 +207,9 @@ int main(int argc, char** argv) {
   run->add_option("--stop-after", stop_after,
                   "Stop after this many converged increments (of this session), exit code 5; --resume continues")
       ->check(CLI::Range(1, 1000000000));  // PositiveNumber's message prints the double's range, 300 digits
+  run->add_option("--dump-tangent", dump_tangent,
+                  "Write the tangent of this session's K-th factorization to OUTPUT/tangent_K.bin (for bench/tangent_bench)")
+      ->check(CLI::Range(1, 1000000000));
   run->add_flag("--plots", plots, "Draw the results' figures (PNG, into the results folder; needs python3-matplotlib)");
   std::vector<std::string> sweep_cases, sweep_values;
   std::string sweep_key;
@@ -233,7 +240,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (sweep->parsed()) return run_sweep(sweep_cases, sweep_key, sweep_values, output_dir, threads, quiet);
-    return run_case_file(case_path, output_dir, threads, quiet, verbose, plots, resume, stop_after);
+    return run_case_file(case_path, output_dir, threads, quiet, verbose, plots, resume, stop_after, dump_tangent);
   } catch (const strandfem::CaseError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return kExitBadInput;

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "strandfem/solver/krylov.hpp"
+#include "strandfem/solver/tangent_dump.hpp"
 
 namespace strandfem {
 
@@ -109,6 +110,8 @@ bool StaticAnalysis::solve_linear(std::vector<double>& rhs, double tolerance) {
   if (analysis_pending_) analyze();
   const Timer timer(statistics_.linear_seconds);
   try {
+    if (opt.dump_tangent_factorization == solver_->statistics().factorizations + 1)
+      write_tangent(opt.dump_tangent_path, assembler_->pattern(), values_);
     solver_->factorize(values_);
     factorization_usable_ = true;
     if (!solver_->needs_refinement()) {

@@ -1,0 +1,120 @@
+// Times the linear algebra of a Newton correction on a real tangent written by `strandfem run --dump-tangent K`:
+// single-precision MUMPS factorizations under two scalings (MUMPS' iterative one and the diagonal one the program
+// uses), GMRES to 1e-8 on the double-precision tangent with those factors, and the tangent's matrix-vector
+// product (plain column loop against the chunked parallel one). Variants run interleaved, so that a machine whose
+// speed drifts during the run treats them alike. Usage: tangent_bench FILE [repeats]. Figures: docs/performance.md.
+#include <omp.h>
+#include <smumps_c.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "strandfem/solver/krylov.hpp"
+#include "strandfem/solver/tangent_dump.hpp"
+
+using namespace strandfem;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+struct Factors {
+  SMUMPS_STRUC_C id{};
+  int scaling = 0;  // ICNTL(8)
+};
+
+void column_loop_product(const SparsePattern& p, const std::vector<double>& a, const std::vector<double>& x,
+                         std::vector<double>& y) {
+  y.assign(p.size, 0.0);
+  for (int c = 0; c < p.size; ++c)
+    for (int k = p.column_start[c]; k < p.column_start[c + 1]; ++k) y[p.row_index[k]] += a[k] * x[c];
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::fprintf(stderr, "usage: tangent_bench FILE [repeats]\n");
+    return 2;
+  }
+  const int repeats = argc > 2 ? std::stoi(argv[2]) : 3;
+  const StoredTangent t = read_tangent(argv[1]);
+  const SparsePattern& p = t.pattern;
+  std::printf("%s: %d equations, %zu entries, %d OpenMP threads\n", argv[1], p.size, p.nonzeros(), omp_get_max_threads());
+  std::vector<int> rows, cols;
+  for (int c = 0; c < p.size; ++c)
+    for (int k = p.column_start[c]; k < p.column_start[c + 1]; ++k) rows.push_back(p.row_index[k] + 1), cols.push_back(c + 1);
+  std::vector<int> pivot_position = nested_dissection_ordering(p);
+  for (int& q : pivot_position) ++q;
+  std::vector<float> values(t.values.begin(), t.values.end()), zeros(values.size(), 0.0f);
+  std::vector<Factors> variants(2);
+  variants[0].scaling = 7;  // MUMPS' default choice for this matrix (77 picks it)
+  variants[1].scaling = 1;  // diagonal: what strandfem's single-precision solver sets
+  for (Factors& f : variants) {
+    SMUMPS_STRUC_C& id = f.id;
+    id.comm_fortran = -987654;
+    id.par = 1;
+    id.sym = 0;
+    id.job = -1;
+    smumps_c(&id);
+    id.icntl[0] = id.icntl[1] = id.icntl[2] = -1;
+    id.icntl[3] = 0;
+    id.icntl[6] = 1;  // pivot order from libmetis, as the program does
+    id.icntl[7] = f.scaling;
+    id.icntl[13] = 50;
+    id.n = p.size;
+    id.nnz = static_cast<MUMPS_INT8>(rows.size());
+    id.irn = rows.data();
+    id.jcn = cols.data();
+    id.a = zeros.data();  // the program analyzes a pattern before its values exist
+    id.perm_in = pivot_position.data();
+    id.job = 1;
+    smumps_c(&id);
+    id.a = values.data();
+  }
+  std::vector<double> b(p.size), x;
+  for (int i = 0; i < p.size; ++i) b[i] = std::sin(0.1 * i) + 0.5;
+  for (int r = 0; r < repeats; ++r)
+    for (Factors& f : variants) {
+      SMUMPS_STRUC_C& id = f.id;
+      auto start = Clock::now();
+      id.job = 2;
+      smumps_c(&id);
+      const double factorization = seconds_since(start);
+      std::vector<float> rhs;
+      start = Clock::now();
+      const KrylovResult k = gmres(
+          p, t.values,
+          [&](std::vector<double>& v) {
+            rhs.assign(v.begin(), v.end());
+            id.rhs = rhs.data();
+            id.nrhs = 1;
+            id.lrhs = p.size;
+            id.job = 3;
+            smumps_c(&id);
+            v.assign(rhs.begin(), rhs.end());
+          },
+          b, x, 1e-8, 30);
+      std::printf("scaling ICNTL(8) = %d: factorization %.3f s (%.3g flops, INFOG(1) %d), GMRES %d iterations to %.2g in %.3f s\n",
+                  f.scaling, factorization, id.rinfog[2], id.infog[0], k.iterations, k.relative_residual, seconds_since(start));
+    }
+  std::vector<double> v(p.size), y;
+  for (int i = 0; i < p.size; ++i) v[i] = std::cos(0.3 * i);
+  ColumnChunkedProduct chunked(p);
+  const int products = 20;
+  for (int r = 0; r < repeats; ++r) {
+    auto start = Clock::now();
+    for (int i = 0; i < products; ++i) column_loop_product(p, t.values, v, y);
+    const double plain = seconds_since(start) / products;
+    start = Clock::now();
+    for (int i = 0; i < products; ++i) chunked.apply(t.values, v, y);
+    std::printf("matrix-vector product: column loop %.4f s, chunked %.4f s\n", plain, seconds_since(start) / products);
+  }
+  for (Factors& f : variants) {
+    f.id.job = -2;
+    smumps_c(&f.id);
+  }
+  return 0;
+}
