@@ -71,8 +71,8 @@ class MumpsSolver final : public LinearSolver {
     id_.icntl[6] = kUserOrdering;
     id_.icntl[13] = 50;  // ICNTL(14): 50 % working-space relaxation
     // Single-precision factors only precondition GMRES: the diagonal scaling (ICNTL(8) = 1) serves them as well
-    // as the iterative row and column scaling MUMPS picks by default (7), which costs about a tenth of each
-    // factorization on the S32 tangent and runs on one thread (docs/performance.md, session 38).
+    // as the iterative row and column scaling MUMPS picks by default (7), which costs about 8 % of each
+    // factorization on an S32 bending tangent and runs on one thread (docs/performance.md, session 38).
     if (kSingle) id_.icntl[7] = 1;
   }
   ~MumpsSolver() override {
