@@ -24,6 +24,12 @@ TEST(TangentDump, RoundTripsPatternBlocksAndValues) {
   EXPECT_EQ(back.pattern.row_index, p.row_index);
   EXPECT_EQ(back.pattern.block_start, p.block_start);
   EXPECT_EQ(back.values, values);
+  // A row index beyond the matrix: refused before it addresses anything.
+  SparsePattern bad = p;
+  bad.row_index[1] = 3;
+  write_tangent(path, bad, values);
+  EXPECT_THROW(read_tangent(path), std::runtime_error);
+  write_tangent(path, p, values);
   // Cut short: refused with the file's name.
   std::filesystem::resize_file(path, std::filesystem::file_size(path) - 8);
   try {

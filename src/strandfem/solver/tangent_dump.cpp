@@ -1,5 +1,6 @@
 #include "strandfem/solver/tangent_dump.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <fstream>
 #include <stdexcept>
@@ -63,6 +64,11 @@ StoredTangent read_tangent(const std::filesystem::path& path) {
       t.pattern.column_start.back() != static_cast<int>(t.pattern.row_index.size()) ||
       t.values.size() != t.pattern.row_index.size())
     throw std::runtime_error("tangent file " + path.string() + ": pattern and values do not agree");
+  // Indices are checked before anyone uses them to address the values.
+  const auto& start = t.pattern.column_start;
+  bool valid = start.front() == 0 && std::is_sorted(start.begin(), start.end());
+  for (int row : t.pattern.row_index) valid = valid && row >= 0 && row < size;
+  if (!valid) throw std::runtime_error("tangent file " + path.string() + ": column starts or row indices out of range");
   return t;
 }
 
