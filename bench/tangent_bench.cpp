@@ -1,8 +1,9 @@
 // Times the linear algebra of a Newton correction on a real tangent written by `strandfem run --dump-tangent K`:
 // single-precision MUMPS factorizations under two scalings (MUMPS' iterative one and the diagonal one the program
 // uses), GMRES to 1e-8 on the double-precision tangent with those factors, and the tangent's matrix-vector
-// product (plain column loop against the chunked parallel one). Variants run interleaved, so that a machine whose
-// speed drifts during the run treats them alike. Usage: tangent_bench FILE [repeats]. Figures: docs/performance.md.
+// product (plain column loop against the chunked parallel one), and the symbolic analysis (METIS ordering, and
+// MUMPS' analysis of the equations' graph against that of the node blocks, ICNTL(15)). Variants run interleaved,
+// so that a machine whose speed drifts during the run treats them alike. Usage: tangent_bench FILE [repeats]. Figures: docs/performance.md.
 #include <omp.h>
 #include <smumps_c.h>
 
@@ -26,6 +27,43 @@ struct Factors {
   int scaling = 0;  // ICNTL(8)
 };
 
+// MUMPS' analysis (JOB = 1) of the pattern with the given pivot order, on the graph of the equations or on that
+// of the pattern's node blocks (ICNTL(15) = 1, as the program does); prints its time and estimated flops.
+void time_analysis(const SparsePattern& p, std::vector<int>& rows, std::vector<int>& cols, std::vector<float>& zeros,
+                   std::vector<int>& pivot_position, bool blocks) {
+  std::vector<int> block_pointer(p.block_start.begin(), p.block_start.end());
+  for (int& b : block_pointer) ++b;
+  SMUMPS_STRUC_C id{};
+  id.comm_fortran = -987654;
+  id.par = 1;
+  id.sym = 0;
+  id.job = -1;
+  smumps_c(&id);
+  id.icntl[0] = id.icntl[1] = id.icntl[2] = -1;
+  id.icntl[3] = 0;
+  id.icntl[6] = 1;
+  id.icntl[7] = 1;
+  id.icntl[13] = 50;
+  if (blocks && block_pointer.size() > 1) {
+    id.icntl[14] = 1;
+    id.nblk = static_cast<int>(block_pointer.size()) - 1;
+    id.blkptr = block_pointer.data();
+  }
+  id.n = p.size;
+  id.nnz = static_cast<MUMPS_INT8>(rows.size());
+  id.irn = rows.data();
+  id.jcn = cols.data();
+  id.a = zeros.data();
+  id.perm_in = pivot_position.data();
+  const auto start = Clock::now();
+  id.job = 1;
+  smumps_c(&id);
+  std::printf("analysis on the graph of %s: %.3f s (INFOG(1) %d, estimated flops %.4g)\n",
+              blocks ? "node blocks (ICNTL(15) = 1)" : "equations", seconds_since(start), id.infog[0], id.rinfog[0]);
+  id.job = -2;
+  smumps_c(&id);
+}
+
 void column_loop_product(const SparsePattern& p, const std::vector<double>& a, const std::vector<double>& x,
                          std::vector<double>& y) {
   y.assign(p.size, 0.0);
@@ -46,9 +84,13 @@ int main(int argc, char** argv) {
   std::vector<int> rows, cols;
   for (int c = 0; c < p.size; ++c)
     for (int k = p.column_start[c]; k < p.column_start[c + 1]; ++k) rows.push_back(p.row_index[k] + 1), cols.push_back(c + 1);
+  auto ordering_start = Clock::now();
   std::vector<int> pivot_position = nested_dissection_ordering(p);
+  std::printf("METIS nested dissection of the block graph: %.3f s\n", seconds_since(ordering_start));
   for (int& q : pivot_position) ++q;
   std::vector<float> values(t.values.begin(), t.values.end()), zeros(values.size(), 0.0f);
+  for (int r = 0; r < repeats; ++r)
+    for (bool blocks : {false, true}) time_analysis(p, rows, cols, zeros, pivot_position, blocks);
   std::vector<Factors> variants(2);
   variants[0].scaling = 7;  // MUMPS' default choice for this matrix (77 picks it)
   variants[1].scaling = 1;  // diagonal: what strandfem's single-precision solver sets
