@@ -67,7 +67,7 @@ def run(program, case, threads, folder):
         s = summary_json.get("solver_statistics", {})
         row["instruction_set"] = summary_json.get("build", {}).get("instruction_set")
         row.update({k: s.get(k) for k in ("newton_iterations", "factorizations", "krylov_solves", "krylov_iterations", "pattern_rebuilds", "rejected_extrapolations", "plain_retries", "double_precision_fallbacks", "force_only_acceptances",
-                                          "assembly_seconds", "linear_seconds", "pattern_seconds", "factorization_seconds", "analysis_seconds", "ordering",
+                                          "assembly_seconds", "residual_seconds", "commit_seconds", "linear_seconds", "pattern_seconds", "factorization_seconds", "analysis_seconds", "ordering",
                                           "blas_kernels", "factor_entries", "factorization_flops")})
         for k in row:
             if k.endswith("_seconds") and row[k] is not None:

@@ -183,9 +183,9 @@ TEST(Resume, RefusesTheCheckpointOfAnotherCase) {
   EXPECT_EQ(read_csv(results / "history.csv").size(), 2u);
 }
 
-// contacts.csv gained three columns with checkpoint format 4: a run that writes it does not continue the rows of a
-// checkpoint of format 3, and the stopped run's results stay as they were.
-TEST(Resume, RefusesAnEarlierFormatWhoseContactRowsHaveFewerColumns) {
+// A checkpoint of an earlier format (format 4's statistics lack the residual and commit times, format 3's contact
+// rows three columns) is refused before anything is read, and the stopped run's results stay as they were.
+TEST(Resume, RefusesACheckpointOfAnEarlierFormat) {
   const ProgramRun first = run_case(kCase, "resume_format", "--stop-after 2");
   ASSERT_EQ(first.exit_code, 5) << first.stderr_text;
   const std::filesystem::path results = first.output / "results";
@@ -195,8 +195,8 @@ TEST(Resume, RefusesAnEarlierFormatWhoseContactRowsHaveFewerColumns) {
     checkpoint.seekg(28);
     int version = 0;
     checkpoint.read(reinterpret_cast<char*>(&version), sizeof version);
-    ASSERT_EQ(version, 4);
-    version = 3;
+    ASSERT_EQ(version, 5);
+    version = 4;
     checkpoint.seekp(28);
     checkpoint.write(reinterpret_cast<const char*>(&version), sizeof version);
   }

@@ -16,28 +16,14 @@ constexpr const char* kMagic = "StrandFEM checkpoint";
 // 3: the fingerprint leaves out the steps' cycle counts, which follow it, so that a resume may add cycles.
 // 4: the same content; contacts.csv has three more columns (interface, mu1, mu2), so a run that writes it does
 //    not continue one of an earlier version, whose rows have fewer.
-constexpr int kFormatVersion = 4;
+// 5: the analysis statistics add the residual and commit times. Only this version is read: the statistics of
+//    the earlier ones have another layout.
+constexpr int kFormatVersion = 5;
 
 std::string fnv1a_hex(const std::string& text) {
   std::uint64_t hash = 14695981039346656037ULL;
   for (const unsigned char byte : text) hash = (hash ^ byte) * 1099511628211ULL;
   return fmt::format("{:016x}", hash);
-}
-
-// The case file's text as parsed (comments and layout do not count), without its solver and output blocks, and
-// without the steps' `cycles` when `with_cycles` is false.
-std::string fingerprint(const CaseDefinition& c, bool with_cycles) {
-  YAML::Node root = YAML::Load(c.resolved.value("case", std::string()));
-  if (root.IsMap()) {
-    root.remove("solver");
-    root.remove("output");
-    if (!with_cycles && root["steps"] && root["steps"].IsSequence())
-      for (YAML::Node step : root["steps"])
-        if (step.IsMap()) step.remove("cycles");
-  }
-  YAML::Emitter emitter;
-  emitter << root;
-  return fnv1a_hex(emitter.c_str());
 }
 
 std::vector<int> step_cycles(const CaseDefinition& c) {
@@ -61,7 +47,21 @@ void check_cycles(const std::vector<int>& saved, const std::vector<int>& now, co
 }
 }  // namespace
 
-std::string case_fingerprint(const CaseDefinition& c) { return fingerprint(c, false); }
+// The case file's text as parsed (comments and layout do not count), without its solver and output blocks and
+// without the steps' `cycles` (they follow it, so that a resume may add cycles).
+std::string case_fingerprint(const CaseDefinition& c) {
+  YAML::Node root = YAML::Load(c.resolved.value("case", std::string()));
+  if (root.IsMap()) {
+    root.remove("solver");
+    root.remove("output");
+    if (root["steps"] && root["steps"].IsSequence())
+      for (YAML::Node step : root["steps"])
+        if (step.IsMap()) step.remove("cycles");
+  }
+  YAML::Emitter emitter;
+  emitter << root;
+  return fnv1a_hex(emitter.c_str());
+}
 
 void write_checkpoint(const std::filesystem::path& directory, const CaseDefinition& c, const ResultWriter& writer,
                       const StaticAnalysis& analysis) {
@@ -88,18 +88,10 @@ ArchiveReader open_checkpoint(const std::filesystem::path& directory, const Case
   } catch (const ArchiveError&) {
     throw ArchiveError(path.string() + " is not a StrandFEM checkpoint");
   }
-  const int version = reader.value<int>();
-  const bool writes_contacts = c.model.contact_settings.enabled && c.output.contacts;
-  const bool readable = version >= 1 && version <= kFormatVersion && !(version < 4 && writes_contacts) &&
-                        !(version == 1 && has_cyclic_strand_step(c));
-  if (!readable)
+  if (reader.value<int>() != kFormatVersion)
     throw ArchiveError(path.string() + " was written by another version of StrandFEM (checkpoint format differs)");
   const std::string another_case =
       path.string() + " was written for another case, or this case file changed since: resume needs the same case";
-  if (version < 3) {  // the fingerprint then included the cycle counts
-    if (reader.string() != fingerprint(c, true)) throw ArchiveError(another_case);
-    return reader;
-  }
   if (reader.string() != case_fingerprint(c)) throw ArchiveError(another_case);
   check_cycles(reader.vector<int>(), step_cycles(c), path.string());
   return reader;

@@ -134,6 +134,8 @@ nlohmann::json solver_statistics(const StaticAnalysis& analysis) {
           {"double_precision_fallbacks", a.double_precision_fallbacks},
           {"force_only_acceptances", a.force_only_acceptances},
           {"assembly_seconds", a.assembly_seconds},
+          {"residual_seconds", a.residual_seconds},
+          {"commit_seconds", a.commit_seconds},
           {"linear_seconds", a.linear_seconds},
           {"pattern_seconds", a.pattern_seconds},
           {"factorization_seconds", l.factorization_seconds},

@@ -5,8 +5,9 @@
 namespace strandfem {
 namespace {
 
-// 2: adds the energy balance and the applied loads of the converged state (version 1 is read without them).
-constexpr int kStateVersion = 2;
+// 2: adds the energy balance and the applied loads of the converged state.
+// 3: the statistics add the residual and commit times; earlier versions cannot be read (another layout).
+constexpr int kStateVersion = 3;
 
 void save_nodes(ArchiveWriter& out, const std::vector<NodeState>& nodes) {
   out.value(static_cast<std::uint64_t>(nodes.size()));
@@ -54,7 +55,7 @@ void StaticAnalysis::save_state(ArchiveWriter& out) const {
 void StaticAnalysis::restore_state(ArchiveReader& in) {
   in.section("analysis");
   const int version = in.value<int>();
-  if (version != kStateVersion && version != 1) throw ArchiveError("checkpoint was written by another version of StrandFEM");
+  if (version != kStateVersion) throw ArchiveError("checkpoint was written by another version of StrandFEM");
   in.expect(static_cast<std::uint64_t>(model_.elements.size()), "the element count");
   in.expect(dofs_.equation_count, "the equation count");
   Progress p;
@@ -73,10 +74,8 @@ void StaticAnalysis::restore_state(ArchiveReader& in) {
   load_nodes(in, previous_committed_state_);
   in.map(committed_motion_);
   in.value(statistics_);
-  if (version >= 2) {
-    in.value(energies_);
-    in.vector(committed_external_);
-  }
+  in.value(energies_);
+  in.vector(committed_external_);
   in.section("elements");
   for (BeamElementState& e : model_state_.elements) e.restore_history(in);
   for (Interaction* interaction : model_state_.interactions()) interaction->restore_state(in, model_.mesh, committed_state_);
@@ -87,8 +86,6 @@ void StaticAnalysis::restore_state(ArchiveReader& in) {
   build_pattern();  // the interactions' element pairs of the checkpoint (not a rebuild the run would count)
   assembler_->assemble(model_, model_state_, state_, internal_forces_, nullptr);
   committed_forces_ = internal_forces_;
-  // Version 1 did not keep the applied loads: the converged internal forces balance them at the free DOFs.
-  if (version == 1) committed_external_ = internal_forces_;
 }
 
 }  // namespace strandfem

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "strandfem/core/scoped_timer.hpp"
 #include "strandfem/solver/static_analysis.hpp"
 
 namespace strandfem {
@@ -92,9 +93,12 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
       if (solve_increment(target, extrapolation, idle_step, loading_continues, motion_floor2, ramps, report, on_progress)) {
         if (retrying_plain) p.extrapolation_failed = true;
         if (report.force_only) ++statistics_.force_only_acceptances;
-        for (BeamElementState& e : model_state_.elements) e.commit();
         bool pattern_changed = false;
-        for (Interaction* interaction : model_state_.interactions()) pattern_changed |= interaction->commit(model_.mesh, state_);
+        {
+          const ScopedTimer timer(statistics_.commit_seconds);
+          for (BeamElementState& e : model_state_.elements) e.commit();
+          for (Interaction* interaction : model_state_.interactions()) pattern_changed |= interaction->commit(model_.mesh, state_);
+        }
         if (pattern_changed) rebuild_pattern();  // element pairs entered or left the pattern
         add_increment_work();
         previous_committed_state_ = committed_state_;

@@ -4,9 +4,9 @@
 #include <omp.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
+#include "strandfem/core/scoped_timer.hpp"
 #include "strandfem/solver/krylov.hpp"
 #include "strandfem/solver/tangent_dump.hpp"
 
@@ -30,16 +30,6 @@ constexpr double kRoundoffFraction = 1.5e-8;
 // measures itself well enough for the displacement test.
 constexpr double kMaxForcing = 0.1;
 
-// Adds the wall time of its scope to a total.
-class Timer {
- public:
-  explicit Timer(double& total) : total_(total), start_(std::chrono::steady_clock::now()) {}
-  ~Timer() { total_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
-
- private:
-  double& total_;
-  std::chrono::steady_clock::time_point start_;
-};
 }  // namespace
 
 StaticAnalysis::StaticAnalysis(Model& model) : model_(model) {
@@ -72,7 +62,7 @@ StaticAnalysis::StaticAnalysis(Model& model) : model_(model) {
 
 void StaticAnalysis::analyze() {
   if (dofs_.equation_count == 0) return;  // all DOFs driven: nothing to factor
-  const Timer timer(statistics_.pattern_seconds);
+  const ScopedTimer timer(statistics_.pattern_seconds);
   solver_->analyze(assembler_->pattern());
   analysis_pending_ = false;
 }
@@ -94,7 +84,7 @@ bool StaticAnalysis::solve_linear(std::vector<double>& rhs, double tolerance) {
   // The factors of an earlier tangent precondition this one, also across a pattern change: GMRES multiplies by
   // the current tangent, and the factors only need the same equations.
   if (factorization_usable_ && opt.krylov_iterations > 0) {
-    const Timer timer(statistics_.linear_seconds);
+    const ScopedTimer timer(statistics_.linear_seconds);
     try {
       const KrylovResult k = preconditioned_solve(rhs, opt.krylov_iterations, tolerance);
       // A preconditioner that needs more than half the allowed iterations has aged: refactor next time.
@@ -108,7 +98,7 @@ bool StaticAnalysis::solve_linear(std::vector<double>& rhs, double tolerance) {
   // The symbolic analysis of a new pattern waits for its first factorization, so that the old factors serve
   // until then.
   if (analysis_pending_) analyze();
-  const Timer timer(statistics_.linear_seconds);
+  const ScopedTimer timer(statistics_.linear_seconds);
   try {
     if (opt.dump_tangent_factorization == solver_->statistics().factorizations + 1)
       write_tangent(opt.dump_tangent_path, assembler_->pattern(), values_);
@@ -142,7 +132,7 @@ void StaticAnalysis::build_pattern() {
 }
 
 void StaticAnalysis::rebuild_pattern() {
-  const Timer timer(statistics_.pattern_seconds);
+  const ScopedTimer timer(statistics_.pattern_seconds);
   build_pattern();
   ++statistics_.pattern_rebuilds;
 }
@@ -219,7 +209,10 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
   };
   // Residual at the current state: rhs = -residual on free DOFs, the relative norm and the force test.
   auto evaluate_residual = [&]() {
-    assembler_->assemble(model_, model_state_, state_, internal_forces_, nullptr, damping());
+    {
+      const ScopedTimer timer(statistics_.residual_seconds);
+      assembler_->assemble(model_, model_state_, state_, internal_forces_, nullptr, damping());
+    }
     double free_force2 = 0, free_moment2 = 0, ref_force2 = 0, ref_moment2 = 0;
     for (std::size_t node = 0; node < node_count; ++node) {
       if (dofs_.tie_of[node] >= 0) continue;
@@ -360,7 +353,7 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
     ++statistics_.newton_iterations;
     ++report.corrections;
     {
-      const Timer timer(statistics_.assembly_seconds);
+      const ScopedTimer timer(statistics_.assembly_seconds);
       assembler_->assemble(model_, model_state_, state_, internal_forces_, &values_, damping());
     }
     if (!solve_linear(rhs, linear_tolerance(current.relative))) return false;

@@ -41,6 +41,8 @@ struct AnalysisStatistics {
   int plain_retries = 0;       // failed extrapolated increments repeated at the same size without extrapolation
   int double_precision_fallbacks = 0;  // single-precision factors that GMRES could not refine: solved in double
   double assembly_seconds = 0; // tangent assembly (elements and interactions) for Newton corrections
+  double residual_seconds = 0; // residual evaluations (internal forces only): predictors, iterates, contact rounds
+  double commit_seconds = 0;   // commits of converged increments (contact searches included, pattern rebuilds not)
   double linear_seconds = 0;   // factorizations, solves and GMRES
   double pattern_seconds = 0;  // pattern rebuilds and the symbolic analyses (METIS ordering included) of patterns
 };
