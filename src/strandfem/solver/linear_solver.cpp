@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <iterator>
 #include <numeric>
 #include <stdexcept>
 
@@ -34,22 +35,33 @@ std::vector<int> nested_dissection_ordering(const SparsePattern& pattern) {
   std::vector<int> block_of(n);
   for (int b = 0; b < blocks; ++b) std::fill(block_of.begin() + block_start[b], block_of.begin() + block_start[b + 1], b);
   // Adjacency of A + A^T between blocks, without self-loops: METIS wants an undirected graph. Each block's first
-  // column stands for all of its columns (and, through the symmetrization, its rows).
-  std::vector<std::vector<int>> neighbours(blocks);
+  // column stands for all of its columns (and, through the symmetrization, its rows). Rows are sorted in each
+  // column and blocks are runs of consecutive equations, so a column's blocks come sorted; the transpose comes
+  // sorted from a counting pass, and the union of the two sorted lists needs no sort (linear in the entries).
+  std::vector<int> column_start(blocks + 1, 0), column_blocks;
   for (int b = 0; b < blocks; ++b) {
     const int col = block_start[b];
+    int last = -1;
     for (int k = pattern.column_start[col]; k < pattern.column_start[col + 1]; ++k) {
       const int other = block_of[pattern.row_index[k]];
-      if (other == b) continue;
-      neighbours[b].push_back(other);
-      neighbours[other].push_back(b);
+      if (other != b && other != last) column_blocks.push_back(other);
+      last = other;
     }
+    column_start[b + 1] = static_cast<int>(column_blocks.size());
+  }
+  std::vector<int> row_start(blocks + 1, 0), row_blocks(column_blocks.size());
+  for (int other : column_blocks) ++row_start[other + 1];
+  std::partial_sum(row_start.begin(), row_start.end(), row_start.begin());
+  {
+    std::vector<int> next(row_start.begin(), row_start.end() - 1);
+    for (int b = 0; b < blocks; ++b)
+      for (int k = column_start[b]; k < column_start[b + 1]; ++k) row_blocks[next[column_blocks[k]]++] = b;
   }
   std::vector<idx_t> adjacency_start(blocks + 1, 0), adjacency, weight(blocks);
+  adjacency.reserve(2 * column_blocks.size());
   for (int b = 0; b < blocks; ++b) {
-    std::sort(neighbours[b].begin(), neighbours[b].end());
-    neighbours[b].erase(std::unique(neighbours[b].begin(), neighbours[b].end()), neighbours[b].end());
-    adjacency.insert(adjacency.end(), neighbours[b].begin(), neighbours[b].end());
+    std::set_union(column_blocks.begin() + column_start[b], column_blocks.begin() + column_start[b + 1],
+                   row_blocks.begin() + row_start[b], row_blocks.begin() + row_start[b + 1], std::back_inserter(adjacency));
     adjacency_start[b + 1] = static_cast<idx_t>(adjacency.size());
     weight[b] = block_start[b + 1] - block_start[b];
   }
