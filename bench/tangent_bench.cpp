@@ -27,13 +27,17 @@ struct Factors {
   int scaling = 0;  // ICNTL(8)
 };
 
-// MUMPS' analysis (JOB = 1) of the pattern with the given pivot order, on the graph of the equations or on that
-// of the pattern's node blocks (ICNTL(15) = 1, as the program does); prints its time and estimated flops.
-void time_analysis(const SparsePattern& p, std::vector<int>& rows, std::vector<int>& cols, std::vector<float>& zeros,
-                   std::vector<int>& pivot_position, bool blocks) {
-  std::vector<int> block_pointer(p.block_start.begin(), p.block_start.end());
-  for (int& b : block_pointer) ++b;
-  SMUMPS_STRUC_C id{};
+// The equations, their pivot order from libmetis, and zero values: what the program hands MUMPS for an analysis,
+// which it does before the pattern's values exist.
+struct Problem {
+  const SparsePattern& pattern;
+  std::vector<int> rows, cols, pivot_position;  // 1-based, as MUMPS reads them
+  std::vector<float> zeros;
+};
+
+// An initialized single-precision MUMPS instance on the problem, with the program's controls and this scaling
+// (ICNTL(8)); not analyzed yet.
+void set_up(SMUMPS_STRUC_C& id, Problem& problem, int scaling) {
   id.comm_fortran = -987654;
   id.par = 1;
   id.sym = 0;
@@ -41,20 +45,29 @@ void time_analysis(const SparsePattern& p, std::vector<int>& rows, std::vector<i
   smumps_c(&id);
   id.icntl[0] = id.icntl[1] = id.icntl[2] = -1;
   id.icntl[3] = 0;
-  id.icntl[6] = 1;
-  id.icntl[7] = 1;
+  id.icntl[6] = 1;  // pivot order from libmetis, as the program does
+  id.icntl[7] = scaling;
   id.icntl[13] = 50;
+  id.n = problem.pattern.size;
+  id.nnz = static_cast<MUMPS_INT8>(problem.rows.size());
+  id.irn = problem.rows.data();
+  id.jcn = problem.cols.data();
+  id.a = problem.zeros.data();
+  id.perm_in = problem.pivot_position.data();
+}
+
+// MUMPS' analysis (JOB = 1) on the graph of the equations or on that of the pattern's node blocks (ICNTL(15) = 1,
+// as the program does); prints its time and estimated flops.
+void time_analysis(Problem& problem, bool blocks) {
+  std::vector<int> block_pointer(problem.pattern.block_start.begin(), problem.pattern.block_start.end());
+  for (int& b : block_pointer) ++b;
+  SMUMPS_STRUC_C id{};
+  set_up(id, problem, 1);
   if (blocks && block_pointer.size() > 1) {
     id.icntl[14] = 1;
     id.nblk = static_cast<int>(block_pointer.size()) - 1;
     id.blkptr = block_pointer.data();
   }
-  id.n = p.size;
-  id.nnz = static_cast<MUMPS_INT8>(rows.size());
-  id.irn = rows.data();
-  id.jcn = cols.data();
-  id.a = zeros.data();
-  id.perm_in = pivot_position.data();
   const auto start = Clock::now();
   id.job = 1;
   smumps_c(&id);
@@ -81,40 +94,25 @@ int main(int argc, char** argv) {
   const StoredTangent t = read_tangent(argv[1]);
   const SparsePattern& p = t.pattern;
   std::printf("%s: %d equations, %zu entries, %d OpenMP threads\n", argv[1], p.size, p.nonzeros(), omp_get_max_threads());
-  std::vector<int> rows, cols;
+  Problem problem{p, {}, {}, {}, std::vector<float>(p.nonzeros(), 0.0f)};
   for (int c = 0; c < p.size; ++c)
-    for (int k = p.column_start[c]; k < p.column_start[c + 1]; ++k) rows.push_back(p.row_index[k] + 1), cols.push_back(c + 1);
+    for (int k = p.column_start[c]; k < p.column_start[c + 1]; ++k)
+      problem.rows.push_back(p.row_index[k] + 1), problem.cols.push_back(c + 1);
   auto ordering_start = Clock::now();
-  std::vector<int> pivot_position = nested_dissection_ordering(p);
+  problem.pivot_position = nested_dissection_ordering(p);
   std::printf("METIS nested dissection of the block graph: %.3f s\n", seconds_since(ordering_start));
-  for (int& q : pivot_position) ++q;
-  std::vector<float> values(t.values.begin(), t.values.end()), zeros(values.size(), 0.0f);
+  for (int& q : problem.pivot_position) ++q;
+  std::vector<float> values(t.values.begin(), t.values.end());
   for (int r = 0; r < repeats; ++r)
-    for (bool blocks : {false, true}) time_analysis(p, rows, cols, zeros, pivot_position, blocks);
+    for (bool blocks : {false, true}) time_analysis(problem, blocks);
   std::vector<Factors> variants(2);
   variants[0].scaling = 7;  // MUMPS' default choice for this matrix (77 picks it)
   variants[1].scaling = 1;  // diagonal: what strandfem's single-precision solver sets
   for (Factors& f : variants) {
-    SMUMPS_STRUC_C& id = f.id;
-    id.comm_fortran = -987654;
-    id.par = 1;
-    id.sym = 0;
-    id.job = -1;
-    smumps_c(&id);
-    id.icntl[0] = id.icntl[1] = id.icntl[2] = -1;
-    id.icntl[3] = 0;
-    id.icntl[6] = 1;  // pivot order from libmetis, as the program does
-    id.icntl[7] = f.scaling;
-    id.icntl[13] = 50;
-    id.n = p.size;
-    id.nnz = static_cast<MUMPS_INT8>(rows.size());
-    id.irn = rows.data();
-    id.jcn = cols.data();
-    id.a = zeros.data();  // the program analyzes a pattern before its values exist
-    id.perm_in = pivot_position.data();
-    id.job = 1;
-    smumps_c(&id);
-    id.a = values.data();
+    set_up(f.id, problem, f.scaling);
+    f.id.job = 1;
+    smumps_c(&f.id);
+    f.id.a = values.data();
   }
   std::vector<double> b(p.size), x;
   for (int i = 0; i < p.size; ++i) b[i] = std::sin(0.1 * i) + 0.5;
