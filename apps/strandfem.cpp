@@ -19,6 +19,7 @@
 #include "strandfem/io/output_file.hpp"
 #include "strandfem/post/model_report.hpp"
 #include "strandfem/solver/blas_kernels.hpp"
+#include "strandfem/solver/mumps_processes.hpp"
 
 #include "strandfem_git_revision.hpp"  // generated at build time (cmake/GitRevision.cmake)
 
@@ -192,6 +193,9 @@ void keep_freed_memory() {
 int main(int argc, char** argv) {
   use_faster_blas_kernels(argv);
   keep_freed_memory();
+  // Under `mpirun -np N` (MPI build of MUMPS) ranks above 0 only take part in rank 0's factorizations and solves.
+  strandfem::MumpsProcesses processes(argc, argv);
+  if (processes.rank() > 0) return processes.serve();
   CLI::App app{"StrandFEM: finite elements for multilayered helical wire strands"};
   app.require_subcommand(1);
   std::string case_path, output_dir = "results";

@@ -3,12 +3,13 @@
 iterations, factorizations, GMRES iterations, time in assembly and linear solves, the ordering that actually ran,
 factor entries and flops, and the axial slope against the fixed-end linear strand theory.
 
-    bench/strand_bench.py [--program build/apps/strandfem] [--frictionless] [--threads N]
+    bench/strand_bench.py [--program build/apps/strandfem] [--frictionless] [--threads N] [--processes P]
                           [--set solver.extrapolate=false ...] CASE.yaml ...
 
 --frictionless also runs each case with contact.friction (and its pairs and zones) set to 0, so that the
 effect of friction on the slope and the cost shows beside it. --set overrides a case key (dotted path, YAML
-value) in every run. Results go to a temporary folder per run.
+value) in every run. --processes P runs each case under `mpiexec --bind-to none -np P` (the MPI build of MUMPS:
+P processes factor). Results go to a temporary folder per run.
 """
 import argparse
 import csv
@@ -42,9 +43,11 @@ def modified_copy(path, folder, overrides, frictionless):
     return out
 
 
-def run(program, case, threads, folder):
+def run(program, case, threads, processes, folder):
     out = os.path.join(folder, "results")
     command = [program, "run", case, "-o", out, "-q"] + (["-t", str(threads)] if threads else [])
+    if processes > 1:
+        command = ["mpiexec", "--allow-run-as-root", "--bind-to", "none", "-np", str(processes)] + command
     start = time.monotonic()
     result = subprocess.run(command, capture_output=True, text=True)
     wall = time.monotonic() - start
@@ -68,7 +71,7 @@ def run(program, case, threads, folder):
         row["instruction_set"] = summary_json.get("build", {}).get("instruction_set")
         row.update({k: s.get(k) for k in ("newton_iterations", "factorizations", "krylov_solves", "krylov_iterations", "pattern_rebuilds", "rejected_extrapolations", "plain_retries", "double_precision_fallbacks", "force_only_acceptances",
                                           "assembly_seconds", "residual_seconds", "commit_seconds", "linear_seconds", "pattern_seconds", "factorization_seconds", "analysis_seconds", "ordering",
-                                          "blas_kernels", "factor_entries", "factorization_flops")})
+                                          "blas_kernels", "mumps_processes", "factor_entries", "factorization_flops")})
         for k in row:
             if k.endswith("_seconds") and row[k] is not None:
                 row[k] = round(row[k], 1)
@@ -85,6 +88,7 @@ def main():
     parser.add_argument("--program", default=os.path.join(os.path.dirname(__file__), "..", "build", "apps", "strandfem"))
     parser.add_argument("--frictionless", action="store_true")
     parser.add_argument("--threads", type=int, default=0)
+    parser.add_argument("--processes", type=int, default=1, help="MUMPS processes (mpiexec -np), MPI build only")
     parser.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
                         help="override a case key in every run, e.g. solver.extrapolate=false")
     args = parser.parse_args()
@@ -99,7 +103,7 @@ def main():
                 variants.append(("frictionless", modified_copy(case, folder, overrides, True)))
             for label, path in variants:
                 with tempfile.TemporaryDirectory() as run_folder:
-                    row = run(args.program, path, args.threads, run_folder)
+                    row = run(args.program, path, args.threads, args.processes, run_folder)
                 row["variant"] = label
                 print(json.dumps(row), flush=True)
 

@@ -5,7 +5,6 @@
 // MUMPS' analysis of the equations' graph against that of the node blocks, ICNTL(15)). Variants run interleaved,
 // so that a machine whose speed drifts during the run treats them alike. Usage: tangent_bench FILE [repeats]. Figures: docs/performance.md.
 #include <omp.h>
-#include <smumps_c.h>
 
 #include <chrono>
 #include <cmath>
@@ -14,6 +13,7 @@
 #include <vector>
 
 #include "strandfem/solver/krylov.hpp"
+#include "strandfem/solver/mumps_call.hpp"
 #include "strandfem/solver/tangent_dump.hpp"
 
 using namespace strandfem;
@@ -38,11 +38,11 @@ struct Problem {
 // An initialized single-precision MUMPS instance on the problem, with the program's controls and this scaling
 // (ICNTL(8)); not analyzed yet.
 void set_up(SMUMPS_STRUC_C& id, Problem& problem, int scaling) {
-  id.comm_fortran = -987654;
+  id.comm_fortran = mumps_communicator();
   id.par = 1;
   id.sym = 0;
   id.job = -1;
-  smumps_c(&id);
+  mumps_call(id);
   id.icntl[0] = id.icntl[1] = id.icntl[2] = -1;
   id.icntl[3] = 0;
   id.icntl[6] = 1;  // pivot order from libmetis, as the program does
@@ -70,11 +70,11 @@ void time_analysis(Problem& problem, bool blocks) {
   }
   const auto start = Clock::now();
   id.job = 1;
-  smumps_c(&id);
+  mumps_call(id);
   std::printf("analysis on the graph of %s: %.3f s (INFOG(1) %d, estimated flops %.4g)\n",
               blocks ? "node blocks (ICNTL(15) = 1)" : "equations", seconds_since(start), id.infog[0], id.rinfog[0]);
   id.job = -2;
-  smumps_c(&id);
+  mumps_call(id);
 }
 
 void column_loop_product(const SparsePattern& p, const std::vector<double>& a, const std::vector<double>& x,
@@ -111,7 +111,7 @@ int main(int argc, char** argv) {
   for (Factors& f : variants) {
     set_up(f.id, problem, f.scaling);
     f.id.job = 1;
-    smumps_c(&f.id);
+    mumps_call(f.id);
     f.id.a = values.data();
   }
   std::vector<double> b(p.size), x;
@@ -121,7 +121,7 @@ int main(int argc, char** argv) {
       SMUMPS_STRUC_C& id = f.id;
       auto start = Clock::now();
       id.job = 2;
-      smumps_c(&id);
+      mumps_call(id);
       const double factorization = seconds_since(start);
       std::vector<float> rhs;
       start = Clock::now();
@@ -133,7 +133,7 @@ int main(int argc, char** argv) {
             id.nrhs = 1;
             id.lrhs = p.size;
             id.job = 3;
-            smumps_c(&id);
+            mumps_call(id);
             v.assign(rhs.begin(), rhs.end());
           },
           b, x, 1e-8, 30);
@@ -154,7 +154,7 @@ int main(int argc, char** argv) {
   }
   for (Factors& f : variants) {
     f.id.job = -2;
-    smumps_c(&f.id);
+    mumps_call(f.id);
   }
   return 0;
 }

@@ -4,7 +4,8 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libfmt-dev
-  libsuitesparse-dev libmumps-seq-dev libmetis-dev libopenblas0-pthread libopenblas-dev
+  libsuitesparse-dev libmumps-seq-dev libmumps-dev libopenmpi-dev openmpi-bin libmetis-dev
+  libopenblas0-pthread libopenblas-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3-matplotlib python3-numpy python3-yaml
 )

@@ -19,13 +19,14 @@ struct ProgramRun {
 
 inline std::string case_path(const std::string& relative) { return std::string(STRANDFEM_SOURCE_DIR) + "/" + relative; }
 
-inline ProgramRun run_program(const std::string& arguments, const std::string& tag) {
+// `launcher` goes before the program (e.g. "mpiexec -np 2").
+inline ProgramRun run_program(const std::string& arguments, const std::string& tag, const std::string& launcher = "") {
   ProgramRun r;
   r.output = std::filesystem::path(::testing::TempDir()) / ("strandfem_" + tag);
   std::filesystem::remove_all(r.output);
   std::filesystem::create_directories(r.output);
   const std::string err = (r.output / "stderr.txt").string();
-  const std::string command = std::string(STRANDFEM_BINARY) + " " + arguments + " > " + (r.output / "stdout.txt").string() + " 2> " + err;
+  const std::string command = (launcher.empty() ? "" : launcher + " ") + STRANDFEM_BINARY + " " + arguments + " > " + (r.output / "stdout.txt").string() + " 2> " + err;
   const int status = std::system(command.c_str());
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   std::ifstream in(err);

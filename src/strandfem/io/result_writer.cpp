@@ -7,6 +7,7 @@
 
 #include "strandfem/post/wire_results.hpp"
 #include "strandfem/solver/blas_kernels.hpp"
+#include "strandfem/solver/mumps_processes.hpp"
 
 namespace strandfem {
 namespace {
@@ -144,6 +145,8 @@ nlohmann::json solver_statistics(const StaticAnalysis& analysis) {
           {"analysis_seconds", l.analysis_seconds},
           {"ordering", l.ordering},
           {"blas_kernels", blas_core_name()},
+          {"mumps_build", mumps_build()},
+          {"mumps_processes", mumps_process_count()},
           {"factor_entries", l.factor_entries},
           {"factorization_flops", l.factorization_flops}};
 }

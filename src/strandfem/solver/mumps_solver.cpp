@@ -1,18 +1,16 @@
-// MUMPS 5.5 sequential unsymmetric multifrontal LU, ordered by METIS through libmetis (the path to distributed runs),
-// in double precision or in single precision (factors that precondition GMRES on the double-precision tangent).
-#include <dmumps_c.h>
-#include <smumps_c.h>
-
+// MUMPS 5.5 unsymmetric multifrontal LU, ordered by METIS through libmetis, in double precision or in single
+// precision (factors that precondition GMRES on the double-precision tangent); on one process or, with the MPI build
+// under mpirun, on all of them (mumps_processes.hpp).
 #include <chrono>
 #include <string>
 #include <type_traits>
 
 #include "strandfem/solver/linear_solver.hpp"
+#include "strandfem/solver/mumps_call.hpp"
 
 namespace strandfem {
 namespace {
 
-constexpr int kUseCommWorld = -987654;  // MUMPS' Fortran communicator placeholder for the sequential build
 constexpr int kUserOrdering = 1;        // ICNTL(7) = 1: pivot order given in PERM_IN
 
 using Clock = std::chrono::steady_clock;
@@ -38,14 +36,12 @@ long long unpack_count(int value) { return value < 0 ? -1'000'000LL * value : va
 struct DoublePrecision {
   using Struct = DMUMPS_STRUC_C;
   using Real = double;
-  static void call(Struct* id) { dmumps_c(id); }
   static constexpr const char* name = "mumps";
 };
 
 struct SinglePrecision {
   using Struct = SMUMPS_STRUC_C;
   using Real = float;
-  static void call(Struct* id) { smumps_c(id); }
   static constexpr const char* name = "mumps_single";
 };
 
@@ -56,18 +52,19 @@ class MumpsSolver final : public LinearSolver {
 
  public:
   MumpsSolver() {
-    id_.comm_fortran = kUseCommWorld;
+    id_.comm_fortran = mumps_communicator();
     id_.par = 1;
     id_.sym = 0;  // unsymmetric: friction makes the tangent unsymmetric
     id_.job = -1;
-    Precision::call(&id_);
+    mumps_call(id_);
     check("initialization");
     id_.icntl[0] = -1;  // no error messages on stdout: errors are reported through exceptions
     id_.icntl[1] = -1;
     id_.icntl[2] = -1;
     id_.icntl[3] = 0;
-    // Debian's libmumps-seq is built without METIS: ICNTL(7) = 5 silently ran AMF or SCOTCH instead
-    // (INFOG(7) = 2 or 3). So the METIS nested dissection is computed here and handed over as the pivot order.
+    // Debian's libmumps-seq is built without METIS (ICNTL(7) = 5 silently ran AMF or SCOTCH instead,
+    // INFOG(7) = 2 or 3), and its MPI build links neither METIS nor SCOTCH. So the METIS nested dissection is
+    // computed here and handed over as the pivot order, the same on either build.
     id_.icntl[6] = kUserOrdering;
     id_.icntl[13] = 50;  // ICNTL(14): 50 % working-space relaxation
     // Single-precision factors only precondition GMRES: the diagonal scaling (ICNTL(8) = 1) serves them as well
@@ -77,7 +74,7 @@ class MumpsSolver final : public LinearSolver {
   }
   ~MumpsSolver() override {
     id_.job = -2;
-    Precision::call(&id_);
+    mumps_call(id_);
   }
 
   void analyze(const SparsePattern& pattern) override {
@@ -110,7 +107,7 @@ class MumpsSolver final : public LinearSolver {
     id_.a = values_.data();
     id_.perm_in = pivot_position_.data();
     id_.job = 1;
-    Precision::call(&id_);
+    mumps_call(id_);
     check("analysis");
     statistics_.ordering = ordering_name(id_.infog[6]);
     ++statistics_.analyses;
@@ -122,7 +119,7 @@ class MumpsSolver final : public LinearSolver {
     values_.assign(values.begin(), values.end());
     id_.a = values_.data();
     id_.job = 2;
-    Precision::call(&id_);
+    mumps_call(id_);
     check("factorization (singular or unstable tangent)");
     statistics_.factor_entries = unpack_count(id_.infog[28]);  // INFOG(29): entries in the factors
     statistics_.factorization_flops = id_.rinfog[2];             // RINFOG(3): flops of the elimination
@@ -141,7 +138,7 @@ class MumpsSolver final : public LinearSolver {
     id_.nrhs = 1;
     id_.lrhs = id_.n;
     id_.job = 3;
-    Precision::call(&id_);
+    mumps_call(id_);
     check("solve");
     if constexpr (kSingle) rhs.assign(rhs_.begin(), rhs_.end());
     ++statistics_.solves;

@@ -1,0 +1,33 @@
+// The processes MUMPS factors on: one, or with the MPI build of MUMPS under `mpirun -np N`, rank 0 (which runs the
+// analysis) and N - 1 ranks that serve its MUMPS calls.
+#pragma once
+#include <string>
+
+namespace strandfem {
+
+// Held by main() for the whole run. It starts MPI where the library has it and ends it; on rank 0 its destructor
+// first releases the serving ranks. With more than one process every process runs one BLAS thread, since the
+// processes are what use the cores in a factorization.
+class MumpsProcesses {
+ public:
+  MumpsProcesses(int& argc, char**& argv);
+  ~MumpsProcesses();
+  MumpsProcesses(const MumpsProcesses&) = delete;
+  MumpsProcesses& operator=(const MumpsProcesses&) = delete;
+  int rank() const { return rank_; }
+  int count() const { return count_; }
+  // On ranks above 0: takes part in every MUMPS call rank 0 makes until rank 0 releases it; returns the exit code.
+  int serve();
+
+ private:
+  int rank_ = 0;
+  int count_ = 1;
+  bool started_mpi_ = false;
+};
+
+// Number of processes the factorizations run on (1 without the MPI build or without mpirun).
+int mumps_process_count();
+// Which MUMPS the library was built on: "MPI (<library version>)" or "sequential".
+std::string mumps_build();
+
+}  // namespace strandfem
