@@ -3,7 +3,8 @@
 // uses), GMRES to 1e-8 on the double-precision tangent with those factors, and the tangent's matrix-vector
 // product (plain column loop against the chunked parallel one), and the symbolic analysis (METIS ordering, and
 // MUMPS' analysis of the equations' graph against that of the node blocks, ICNTL(15)). Variants run interleaved,
-// so that a machine whose speed drifts during the run treats them alike. Usage: tangent_bench FILE [repeats]. Figures: docs/performance.md.
+// so that a machine whose speed drifts during the run treats them alike. Usage: tangent_bench FILE [repeats], or
+// `mpiexec --bind-to none -np P tangent_bench FILE [repeats]` for MUMPS on P processes. Figures: docs/performance.md.
 #include <omp.h>
 
 #include <chrono>
@@ -14,6 +15,7 @@
 
 #include "strandfem/solver/krylov.hpp"
 #include "strandfem/solver/mumps_call.hpp"
+#include "strandfem/solver/mumps_processes.hpp"
 #include "strandfem/solver/tangent_dump.hpp"
 
 using namespace strandfem;
@@ -86,6 +88,9 @@ void column_loop_product(const SparsePattern& p, const std::vector<double>& a, c
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Under `mpiexec -np P` (MPI build) the factorizations and solves run on P processes, as in the program.
+  MumpsProcesses processes(argc, argv);
+  if (processes.rank() > 0) return processes.serve();
   if (argc < 2) {
     std::fprintf(stderr, "usage: tangent_bench FILE [repeats]\n");
     return 2;
@@ -93,7 +98,8 @@ int main(int argc, char** argv) {
   const int repeats = argc > 2 ? std::stoi(argv[2]) : 3;
   const StoredTangent t = read_tangent(argv[1]);
   const SparsePattern& p = t.pattern;
-  std::printf("%s: %d equations, %zu entries, %d OpenMP threads\n", argv[1], p.size, p.nonzeros(), omp_get_max_threads());
+  std::printf("%s: %d equations, %zu entries, %d OpenMP threads, MUMPS %s on %d processes\n", argv[1], p.size,
+              p.nonzeros(), omp_get_max_threads(), mumps_build().c_str(), processes.count());
   Problem problem{p, {}, {}, {}, std::vector<float>(p.nonzeros(), 0.0f)};
   for (int c = 0; c < p.size; ++c)
     for (int k = p.column_start[c]; k < p.column_start[c + 1]; ++k)

@@ -50,10 +50,20 @@ int world_size() {
   return size;
 }
 
+// True when mpiexec (Open MPI, or a PMI-based launcher) started this process.
+bool launched_by_mpiexec() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE"})
+    if (std::getenv(name)) return true;
+  return false;
+}
+
 void start_mpi_if_needed(int* argc, char*** argv, bool& started) {
   int initialized = 0;
   MPI_Initialized(&initialized);
   if (initialized) return;
+  // A singleton (no mpiexec) keeps PMIx's data in its own memory: its default store is a shared-memory file,
+  // which fails where files are limited (ulimit -f) and would end the run in MPI_Init.
+  if (!launched_by_mpiexec()) setenv("PMIX_MCA_gds", "hash", 0);
   int provided = 0;
   // Only the main thread calls MPI (OpenMP regions never do).
   if (MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS)
@@ -109,6 +119,9 @@ void serve_call(std::map<std::uint64_t, std::unique_ptr<Struct>>& instances, con
 
 MumpsProcesses::MumpsProcesses(int& argc, char**& argv) {
 #ifdef STRANDFEM_MUMPS_MPI
+  // Without mpiexec MPI starts only when a MUMPS solver is first made (mumps_communicator), so that commands
+  // that factor nothing (`info`, bad input) do not pay for it.
+  if (!launched_by_mpiexec()) return;
   start_mpi_if_needed(&argc, &argv, started_mpi_);
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   count_ = world_size();

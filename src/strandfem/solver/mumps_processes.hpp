@@ -5,8 +5,8 @@
 
 namespace strandfem {
 
-// Held by main() for the whole run. It starts MPI where the library has it and ends it; on rank 0 its destructor
-// first releases the serving ranks. With more than one process every process runs one BLAS thread, since the
+// Held by main() for the whole run. Under mpiexec it starts MPI (where the library has it) and ends it; on rank 0
+// its destructor first releases the serving ranks. With more than one process every process runs one BLAS thread, since the
 // processes are what use the cores in a factorization.
 class MumpsProcesses {
  public:
