@@ -61,6 +61,35 @@ Quat<T> lift_quat(const Quaternion& q) {
   return {T(q.w()), T(q.x()), T(q.y()), T(q.z())};
 }
 
+// The quaternion product a b of a quaternion with derivatives and a constant one: the constant's factors are plain
+// numbers, far cheaper than the lifted products with zero derivatives.
+template <class T>
+Quat<T> multiply_by_constant(const Quat<T>& a, const Quaternion& b) {
+  const double w = b.w(), x = b.x(), y = b.y(), z = b.z();
+  return {a.w * w - a.x * x - a.y * y - a.z * z, a.w * x + a.x * w + a.y * z - a.z * y,
+          a.w * y - a.x * z + a.y * w + a.z * x, a.w * z + a.x * y - a.y * x + a.z * w};
+}
+
+// exp(eps^) exp(Delta^) of node `node`'s virtual spin eps (the inner directions 3 node + k) and spin increment Delta
+// (the outer ones), as far as the nested numbers carry it: first order in each and their product. There
+// exp(eps^) = (1, eps/2) and exp(Delta^) = (1, Delta/2) exactly, as |eps|^2 and |Delta|^2 vanish, so the product
+// is (1 - eps.Delta/4, (eps + Delta)/2 + eps x Delta/4), set here entry by entry.
+Quat<D2> spin_perturbation(int node) {
+  Quat<D2> p;
+  std::array<D2*, 3> vector{&p.x, &p.y, &p.z};
+  for (int k = 0; k < 3; ++k) {
+    const int d = 3 * node + k;
+    p.w.grad[d].grad[d] = -0.25;
+    vector[k]->value.grad[d] = 0.5;
+    vector[k]->grad[d].value = 0.5;
+    // (eps x Delta)_k = eps_(k+1) Delta_(k+2) - eps_(k+2) Delta_(k+1): outer index first.
+    const int next = 3 * node + (k + 1) % 3, after = 3 * node + (k + 2) % 3;
+    vector[k]->grad[after].grad[next] = 0.25;
+    vector[k]->grad[next].grad[after] = -0.25;
+  }
+  return p;
+}
+
 double plain_value(const D1& v) { return v.value; }
 double plain_value(const D2& v) { return v.value.value; }
 
@@ -143,15 +172,7 @@ void BeamElement::evaluate(const std::array<NodeState, 3>& current, BeamElementS
   // with Lambda = exp(eps^) exp(Delta^) Lambda_current. The order matters: it makes d residual / d Delta the
   // consistent tangent of the multiplicative update (unsymmetric away from equilibrium).
   std::array<Quat<D2>, 3> q;
-  for (int i = 0; i < 3; ++i) {
-    V3<D2> virtual_spin, increment_spin;
-    for (int k = 0; k < 3; ++k) {
-      virtual_spin[k] = D2(D1::variable(0.0, 3 * i + k), 0);
-      increment_spin[k] = D2::variable(D1(0.0), 3 * i + k);
-    }
-    q[i] = multiply(quat_from_rotation_vector(virtual_spin),
-                    multiply(quat_from_rotation_vector(increment_spin), lift_quat<D2>(current[i].rotation)));
-  }
+  for (int i = 0; i < 3; ++i) q[i] = multiply_by_constant(spin_perturbation(i), current[i].rotation);
   const auto kinematics = point_kinematics(q, points_);
   for (int g = 0; g < 2; ++g) {
     const BeamIntegrationPoint& p = points_[g];
