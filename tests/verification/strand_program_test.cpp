@@ -186,6 +186,27 @@ TEST(NewtonConvergence, LineSearchTakesTheFirstCorrectionInFull) {
   EXPECT_TRUE(full_rose) << "without the search a later correction must raise the residual";
 }
 
+// After a cut-back the retry's first correction is searched too (docs/theory.md, "Line search"): the roll-up's
+// first attempt, given too few corrections to converge, takes its first correction in full; the retry at half
+// the size cuts it while it raises the residual.
+TEST(NewtonConvergence, LineSearchCutsTheFirstCorrectionOfARetryAfterACutBack) {
+  CaseDefinition c = roll_up_in_eight_increments(20);
+  c.model.options.max_cutbacks = 1;
+  c.model.options.max_iterations = 2;
+  StaticAnalysis analysis(c.model);
+  std::vector<std::vector<double>> attempts;  // residual histories of the first increment's attempts
+  analysis.run({}, [&](const IncrementReport& r) {
+    if (r.increment != 1) return;
+    if (attempts.empty() || r.residual_history.size() <= attempts.back().size()) attempts.emplace_back();
+    attempts.back() = r.residual_history;
+  });
+  ASSERT_GE(attempts.size(), 2u) << "the first attempt must fail and be retried for this test to mean anything";
+  ASSERT_GE(attempts[0].size(), 2u);
+  ASSERT_GE(attempts[1].size(), 2u);
+  EXPECT_GT(attempts[0][1], attempts[0][0]) << "the first attempt's first correction is taken in full";
+  EXPECT_LE(attempts[1][1], attempts[1][0]) << "the retry's first correction is cut while it raises the residual";
+}
+
 // An attempt whose full first correction raised the residual is measured from there by the divergence check, not
 // from the predictor: the roll-up, whose searched corrections then fall slowly (967 -> 131 -> 6.7 -> ... -> 2.2
 // after eight) but stay above the predictor's residual of 1 for longer than the check's eight corrections.

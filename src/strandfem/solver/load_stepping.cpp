@@ -90,6 +90,7 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
               ? cut_increment_motion_floor2(motion2(committed_state_, previous_committed_state_), p.last_size,
                                             target - p.fraction, nominal)
               : 0.0;
+      retrying_cut_increment_ = cutbacks > 0;
       if (solve_increment(target, extrapolation, idle_step, loading_continues, motion_floor2, ramps, report, on_progress)) {
         if (retrying_plain) p.extrapolation_failed = true;
         if (report.force_only) ++statistics_.force_only_acceptances;

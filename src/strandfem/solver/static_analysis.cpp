@@ -365,8 +365,12 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
     // Cardinal's return halves showed it: the full first correction raised the residual from 0.004 to 0.07-0.4
     // (crossings pressed into the normal band) and the next two brought it within the tolerance, while the
     // halved one left half the motion to the next correction, halved again, and Newton crept (docs/theory.md).
+    // After a cut-back the first correction is searched too: S32 case 4 (cycle 4, at 0.9 Vmax, 63e8e3b on two
+    // processes) stopped where the full first correction from a converged state raised the residual from 0.003
+    // to 3.8 at every size down to 1/256 of the nominal increment, while the searched one converged the full
+    // increment in 8 corrections (docs/theory.md, "Line search").
     const bool first_correction = report.corrections == 1;
-    const int line_search_cuts = first_correction ? 0 : opt.line_search_cuts;
+    const int line_search_cuts = first_correction && !retrying_cut_increment_ ? 0 : opt.line_search_cuts;
     double alpha = 1;
     last_correction2_ = apply_correction(alpha);
     Residual trial = evaluate_residual();

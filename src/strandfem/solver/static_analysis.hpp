@@ -157,6 +157,7 @@ class StaticAnalysis {
   ElementDamping damping() const { return {&stabilization_, &committed_state_, stabilization_factor_}; }  // the converged increment's external work and stabilization energy into energies_
   ViscousStabilization stabilization_;
   double stabilization_factor_ = 0;         // this increment's factor (SolverOptions::stabilization, ramped)
+  bool retrying_cut_increment_ = false;     // this attempt follows a cut-back: its first correction is searched too
   std::vector<double> external_;            // applied nodal loads of the current increment (6 per node)
   std::vector<double> committed_external_;  // and of the last converged one
   std::vector<double> committed_forces_;    // internal forces of the last converged state
