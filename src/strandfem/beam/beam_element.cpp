@@ -61,15 +61,6 @@ Quat<T> lift_quat(const Quaternion& q) {
   return {T(q.w()), T(q.x()), T(q.y()), T(q.z())};
 }
 
-// The quaternion product a b of a quaternion with derivatives and a constant one: the constant's factors are plain
-// numbers, far cheaper than the lifted products with zero derivatives.
-template <class T>
-Quat<T> multiply_by_constant(const Quat<T>& a, const Quaternion& b) {
-  const double w = b.w(), x = b.x(), y = b.y(), z = b.z();
-  return {a.w * w - a.x * x - a.y * y - a.z * z, a.w * x + a.x * w + a.y * z - a.z * y,
-          a.w * y - a.x * z + a.y * w + a.z * x, a.w * z + a.x * y - a.y * x + a.z * w};
-}
-
 // exp(eps^) exp(Delta^) of node `node`'s virtual spin eps (the inner directions 3 node + k) and spin increment Delta
 // (the outer ones), as far as the nested numbers carry it: first order in each and their product. There
 // exp(eps^) = (1, eps/2) and exp(Delta^) = (1, Delta/2) exactly, as |eps|^2 and |Delta|^2 vanish, so the product
@@ -172,7 +163,7 @@ void BeamElement::evaluate(const std::array<NodeState, 3>& current, BeamElementS
   // with Lambda = exp(eps^) exp(Delta^) Lambda_current. The order matters: it makes d residual / d Delta the
   // consistent tangent of the multiplicative update (unsymmetric away from equilibrium).
   std::array<Quat<D2>, 3> q;
-  for (int i = 0; i < 3; ++i) q[i] = multiply_by_constant(spin_perturbation(i), current[i].rotation);
+  for (int i = 0; i < 3; ++i) q[i] = multiply(spin_perturbation(i), lift_quat<double>(current[i].rotation));
   const auto kinematics = point_kinematics(q, points_);
   for (int g = 0; g < 2; ++g) {
     const BeamIntegrationPoint& p = points_[g];

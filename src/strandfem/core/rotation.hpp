@@ -29,8 +29,9 @@ V3<T> cross(const V3<T>& a, const V3<T>& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 
-template <class T>
-Quat<T> multiply(const Quat<T>& a, const Quat<T>& b) {
+// a b; either may be a constant (Quat<double>), whose parts then multiply as plain numbers.
+template <class A, class B>
+auto multiply(const Quat<A>& a, const Quat<B>& b) -> Quat<decltype(a.w * b.w)> {
   return {a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z, a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
           a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x, a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
 }
