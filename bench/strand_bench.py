@@ -69,7 +69,7 @@ def run(program, case, threads, processes, folder):
         summary_json = json.load(open(summary))
         s = summary_json.get("solver_statistics", {})
         row["instruction_set"] = summary_json.get("build", {}).get("instruction_set")
-        row.update({k: s.get(k) for k in ("newton_iterations", "factorizations", "krylov_solves", "krylov_iterations", "pattern_rebuilds", "rejected_extrapolations", "plain_retries", "double_precision_fallbacks", "force_only_acceptances",
+        row.update({k: s.get(k) for k in ("newton_iterations", "factorizations", "krylov_solves", "krylov_iterations", "pattern_rebuilds", "rejected_extrapolations", "plain_retries", "limited_corrections", "double_precision_fallbacks", "force_only_acceptances",
                                           "assembly_seconds", "residual_seconds", "commit_seconds", "linear_seconds", "pattern_seconds", "factorization_seconds", "analysis_seconds", "ordering",
                                           "blas_kernels", "mumps_processes", "factor_entries", "factorization_flops")})
         for k in row:

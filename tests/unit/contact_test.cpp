@@ -848,6 +848,46 @@ TEST(ContactSet, StabilizationResistsOnlyTheSlideWithinAnIncrement) {
   EXPECT_NEAR(across_is_slave * second.stabilization.z(), -k * 0.1, 1e-9 * k);
 }
 
+// Step control: a correction that closes a point its starting iterate had open (or within the smoothing band)
+// deeper than kDeepClosing closing depths is cut to where that point just reaches one closing depth, the gap taken
+// as linear in the fraction; points already in the penalty regime, and shallow closings, leave it whole.
+TEST(ContactSet, StepControlCutsACorrectionThatClosesAnOpenPointDeep) {
+  const Mesh mesh = parallel_lines(2, 2, 20, 2.3);  // gap 0.3 mm
+  ContactSettings settings = enabled_contact();
+  settings.initial_overlap = InitialOverlap::kKeep;
+  ContactSet contacts;
+  contacts.initialize(mesh, settings);
+  ASSERT_FALSE(contacts.points().empty());
+  auto slave_moved = [&](double dx) {
+    std::vector<NodeState> state = reference_state(mesh);
+    for (std::size_t n = 0; n < state.size(); ++n)
+      if (mesh.nodes[n].wire == 1) state[n].position.x() += dx;
+    return state;
+  };
+  const double depth = kClosingDepthFraction * 2.0;  // r_a + r_b = 2 mm, no smoothing
+  auto fraction_for = [&](double start_dx, double end_dx) {
+    contacts.begin_increment(true);
+    contacts.evaluate(mesh, slave_moved(start_dx), true);
+    contacts.begin_correction();
+    contacts.evaluate(mesh, slave_moved(end_dx), false);
+    return contacts.admissible_fraction();
+  };
+  // Open at 0.3 mm, pressed 0.05 mm deep: cut to a depth of 5e-4 mm.
+  EXPECT_NEAR(fraction_for(0.0, -0.35), (0.3 + depth) / 0.35, 1e-9);
+  // Closing shallower than ten depths (4e-3 mm): whole.
+  EXPECT_EQ(fraction_for(0.0, -0.304), 1.0);
+  // Already pressed 0.001 mm into the penalty regime, pressed further: whole (its tangent knew it).
+  EXPECT_EQ(fraction_for(-0.301, -0.35), 1.0);
+  // Within a smoothing band of 0.01 mm the stiffness is partial: a point at +0.005 mm pressed 0.2 mm deep is cut to
+  // one band width.
+  ContactSettings smoothed = settings;
+  smoothed.normal_smoothing = 0.01;
+  contacts = ContactSet();
+  contacts.initialize(mesh, smoothed);
+  EXPECT_NEAR(fraction_for(-0.295, -0.5), (0.005 + 0.01) / 0.205, 1e-9);
+  EXPECT_EQ(fraction_for(-0.295, -0.35), 1.0);  // 0.05 mm: five band widths
+}
+
 TEST(ContactSet, InitialOverlapIsOffset) {
   const Mesh mesh = parallel_lines(2, 2, 20, 1.9);
   ContactSet contacts;

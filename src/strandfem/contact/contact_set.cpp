@@ -572,6 +572,26 @@ void ContactSet::accept_iterate(const Mesh& mesh) {
   pairs_grew_ = true;
 }
 
+void ContactSet::begin_correction() {
+  correction_start_gaps_.resize(responses_.size());
+  for (std::size_t i = 0; i < responses_.size(); ++i) correction_start_gaps_[i] = responses_[i].gap;
+}
+
+double ContactSet::admissible_fraction() const {
+  if (correction_start_gaps_.size() != responses_.size()) return 1.0;
+  double fraction = 1.0;
+  for (std::size_t i = 0; i < responses_.size(); ++i) {
+    const ContactPoint& p = points_[i];
+    const double smoothing = p.stiffness.smoothing, start = correction_start_gaps_[i], end = responses_[i].gap;
+    if (!(start > -smoothing) || !std::isfinite(start)) continue;  // fully in the penalty regime already
+    const double depth = closing_depth(smoothing, p.radius_a + p.radius_b);
+    if (!(end < -kDeepClosing * depth)) continue;
+    // The gap is taken as linear in the fraction (the correction is short against the wires' curvature).
+    fraction = std::min(fraction, (start + depth) / (start - end));
+  }
+  return fraction;
+}
+
 bool ContactSet::update_pattern_membership(bool may_leave) {
   bool entered = false;
   for (std::size_t i = 0; i < points_.size(); ++i) {

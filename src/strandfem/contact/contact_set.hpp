@@ -52,6 +52,12 @@ class ContactSet final : public Interaction {
     return grew;
   }
   int changes_at_convergence() override { return release_tensile(); }
+  // A point that carried less than the full penalty stiffness where a correction starts (open, or within the
+  // normal smoothing band) may close in it, but a correction that presses it deeper than kDeepClosing closing
+  // depths is cut to where the deepest such point just reaches one closing depth: its tangent knew nothing of that
+  // point, and the penalty force there would be the tangent's error, not the strand's.
+  void begin_correction() override;
+  double admissible_fraction() const override;
   void revert() override {}  // working states are rebuilt from the histories by begin_increment
   void activate_closed();
   // Checkpoints: everything a resumed run needs to continue from the last converged increment. restore_state
@@ -110,6 +116,7 @@ class ContactSet final : public Interaction {
   std::map<std::pair<int, int>, int> group_of_;             // (slave mesh element, wire b) -> group
   std::map<std::pair<int, int>, ContactKind> wire_pair_kind_;  // (lower wire, higher wire)
   std::vector<std::pair<int, int>> element_pairs_;
+  std::vector<double> correction_start_gaps_;  // gaps of the iterate the current Newton correction starts from
   std::vector<char> in_pattern_;  // per point: its element pairs are in the pattern (a line point: its group's)
   bool pairs_grew_ = false;
   std::vector<NodeState> reference_;  // the mesh's stress-free state (overlap offsets are measured there)

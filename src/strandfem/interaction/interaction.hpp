@@ -36,6 +36,11 @@ class Interaction {
   virtual void evaluate(const Mesh& mesh, const std::vector<NodeState>& state, bool with_tangent) = 0;
   // The contributions of the last evaluation (only the active ones).
   virtual void contributions(const Mesh& mesh, std::vector<PairContribution>& out) const = 0;
+  // Step control of a Newton correction. begin_correction: the last evaluation is the iterate a correction starts
+  // from; admissible_fraction, once the full correction has been evaluated: the largest fraction of it, in (0, 1],
+  // that keeps within what the iterate's tangent knew (1: no limit).
+  virtual void begin_correction() {}
+  virtual double admissible_fraction() const { return 1.0; }
   // After each accepted Newton iterate (e.g. points that closed become active).
   virtual void accept_iterate(const Mesh& mesh) = 0;
   // After accept_iterate: true once when element_pairs() gained pairs (an interaction outside the pattern

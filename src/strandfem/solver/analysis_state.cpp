@@ -6,8 +6,10 @@ namespace strandfem {
 namespace {
 
 // 2: adds the energy balance and the applied loads of the converged state.
-// 3: the statistics add the residual and commit times; earlier versions cannot be read (another layout).
-constexpr int kStateVersion = 3;
+// 3: the statistics add the residual and commit times.
+// 4: the statistics add the corrections cut by the step control (limited_corrections). Only this version is read:
+//    the statistics of the earlier ones have another layout.
+constexpr int kStateVersion = 4;
 
 void save_nodes(ArchiveWriter& out, const std::vector<NodeState>& nodes) {
   out.value(static_cast<std::uint64_t>(nodes.size()));

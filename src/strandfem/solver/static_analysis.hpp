@@ -39,6 +39,7 @@ struct AnalysisStatistics {
   int rejected_extrapolations = 0;  // extrapolated predictors worse than the plain one (not used)
   int force_only_acceptances = 0;  // increments accepted on the force test alone (see IncrementReport::force_only)
   int plain_retries = 0;       // failed extrapolated increments repeated at the same size without extrapolation
+  int limited_corrections = 0; // Newton corrections shortened by an interaction's step control (admissible_fraction)
   int double_precision_fallbacks = 0;  // single-precision factors that GMRES could not refine: solved in double
   double assembly_seconds = 0; // tangent assembly (elements and interactions) for Newton corrections
   double residual_seconds = 0; // residual evaluations (internal forces only): predictors, iterates, contact rounds
