@@ -9,27 +9,16 @@
 #include <stdexcept>
 
 #include "strandfem/contact/contact_search.hpp"
+#include "strandfem/contact/wire_geometry.hpp"
 
 namespace strandfem {
 
 namespace {
 
-constexpr double kRangeTolerance = 1e-9;
-// A crossing this close to an element end (in the element parameter) is located among the neighbouring elements too.
-constexpr double kCrossingEndZone = 0.1;
+using namespace wire_geometry;
+
 // Stale element pairs (no point near closing) stay in the pattern until they exceed this share of the needed ones.
 constexpr double kStalePatternFraction = 0.25;
-
-ElementCenterline<double> centerline(const Mesh& mesh, const std::vector<NodeState>& state, int element) {
-  ElementCenterline<double> x;
-  for (int i = 0; i < 3; ++i) {
-    const Vec3& p = state[mesh.elements[element].nodes[i]].position;
-    x[i] = {p[0], p[1], p[2]};
-  }
-  return x;
-}
-
-Vec3 to_vec(const V3<double>& v) { return Vec3(v[0], v[1], v[2]); }
 
 // How a wire lies about the strand axis (through the origin), from an element's chord in the reference
 // configuration; summed over a pair's candidate elements, then their mean.
@@ -85,133 +74,6 @@ ContactKind classify_pair(const Mesh& mesh, int low, int high, const PairLayout&
     if (la.hand * lb.hand < 0) return ContactKind::kPoint;
   }
   return layout.angle_sum / n < line_contact_angle ? ContactKind::kLine : ContactKind::kPoint;
-}
-
-ElementPose<double> pose(const Mesh& mesh, const std::vector<NodeState>& state, int element) {
-  ElementPose<double> e;
-  e.x = centerline(mesh, state, element);
-  for (int i = 0; i < 3; ++i) {
-    const Quaternion& q = state[mesh.elements[element].nodes[i]].rotation;
-    e.q[i] = {q.w(), q.x(), q.y(), q.z()};
-  }
-  return e;
-}
-
-int local_index(const Mesh& mesh, int element) {
-  return element - mesh.wires[mesh.elements[element].wire].elements.front();
-}
-
-int element_count(const Mesh& mesh, int wire) { return static_cast<int>(mesh.wires[wire].elements.size()); }
-
-// Half-open parameter ranges (-1, 1] partition a wire among its elements (the first element also takes -1),
-// so a foot point on a shared node belongs to exactly one element.
-bool in_range(double parameter, int local) {
-  const bool above_start = parameter > -1.0 + kRangeTolerance || (local == 0 && parameter >= -1.0 - kRangeTolerance);
-  return above_start && parameter <= 1.0 + kRangeTolerance;
-}
-
-double arc_length(const ElementCenterline<double>& x) {
-  std::vector<double> gp, gw;
-  gauss_legendre(4, gp, gw);
-  double length = 0;
-  for (int i = 0; i < 4; ++i) {
-    const V3<double> t = centerline_tangent(x, gp[i]);
-    length += gw[i] * std::sqrt(dot(t, t));
-  }
-  return length;
-}
-
-// The orthogonal projection of x onto a line group's master wire: the candidate element whose half-open
-// range holds the foot point, nearest first. element = -1 when x projects past the wire's ends.
-struct FootPoint {
-  int element = -1;
-  double eta = 0, distance = 1e300;
-};
-FootPoint project_onto_wire(const Mesh& mesh, const std::vector<NodeState>& state, const LineContactGroup& group,
-                            const V3<double>& x, int guess_element, double guess_eta) {
-  FootPoint best;
-  for (int k : group.candidates) {
-    const auto b = centerline(mesh, state, mesh.wires[group.wire_b].elements[k]);
-    double eta = k == guess_element ? guess_eta : 0.0;
-    if (!project_point(x, b, eta) || !in_range(eta, k)) continue;
-    const V3<double> d = sub(x, centerline_point(b, eta));
-    const double distance = std::sqrt(dot(d, d));
-    if (distance < best.distance) best = {k, eta, distance};
-  }
-  return best;
-}
-
-// Where a crossing lies now: the nearest pair of points of the two wires around the element pair it was last
-// committed on. Away from element ends that is the closest-point solution of that pair. Near an end the nearest of
-// every candidate over the neighbouring elements is taken: closest points inside an element pair, a wire's shared
-// node projected inside the other wire's element, node against node. Where a wire's two elements meet at an angle
-// the nearest point often is the node (the closest point of each element lies past its end, on S32 under bending
-// -1.002 on one and 1.010 on the other). The minimum of distances is continuous as the wires move and does not
-// depend on the path of earlier evaluations: stepping from element to element did, and the same state gave 160 N
-// or 784 N at a crossing depending on the element it started from (docs/theory.md, "Locating a crossing as the
-// nearest pair of points").
-struct CrossingLocation {
-  int element_a = -1, element_b = -1;  // indices within each wire; -1: no nearby pair of points
-  double xi = 0, eta = 0;
-  PinnedParameter pinned = PinnedParameter::kNone;
-  double distance = 1e300;
-};
-
-CrossingLocation locate_crossing(const Mesh& mesh, const std::vector<NodeState>& state, const ContactPoint& p) {
-  const int count_a = element_count(mesh, p.wire_a), count_b = element_count(mesh, p.wire_b);
-  auto line = [&](int wire, int local) { return centerline(mesh, state, mesh.wires[wire].elements[local]); };
-  auto inside = [](double parameter) { return std::abs(parameter) <= 1.0 + kRangeTolerance; };
-  {
-    double xi = p.xi, eta = p.eta;
-    if (closest_points(line(p.wire_a, p.element_a), line(p.wire_b, p.element_b), xi, eta) &&
-        std::abs(xi) <= 1.0 - kCrossingEndZone && std::abs(eta) <= 1.0 - kCrossingEndZone)
-      return {p.element_a, p.element_b, xi, eta, PinnedParameter::kNone, 0.0};
-  }
-  CrossingLocation best;
-  bool beyond_wire_end = false;  // the nearest pair of points lies past a wire's first or last node
-  auto consider = [&](int ea, int eb, double xi, double eta, PinnedParameter pinned, const V3<double>& xa, const V3<double>& xb,
-                      bool past_end = false) {
-    const V3<double> d = sub(xa, xb);
-    const double distance = std::sqrt(dot(d, d));
-    if (distance < best.distance) {
-      best = {ea, eb, xi, eta, pinned, distance};
-      beyond_wire_end = past_end;
-    }
-  };
-  auto past_wire_end = [&](int local, double parameter, int count) {
-    return (local == 0 && parameter < -1.0 - kRangeTolerance) || (local == count - 1 && parameter > 1.0 + kRangeTolerance);
-  };
-  const int first_a = std::max(0, p.element_a - 1), last_a = std::min(count_a - 1, p.element_a + 1);
-  const int first_b = std::max(0, p.element_b - 1), last_b = std::min(count_b - 1, p.element_b + 1);
-  for (int ea = first_a; ea <= last_a; ++ea) {
-    const auto a = line(p.wire_a, ea);
-    for (int eb = first_b; eb <= last_b; ++eb) {
-      const auto b = line(p.wire_b, eb);
-      double xi = std::clamp(p.xi - 2.0 * (ea - p.element_a), -1.0, 1.0), eta = std::clamp(p.eta - 2.0 * (eb - p.element_b), -1.0, 1.0);
-      if (closest_points(a, b, xi, eta)) {
-        const bool past_end = past_wire_end(ea, xi, count_a) || past_wire_end(eb, eta, count_b);
-        // Past a wire's end there is no wire to touch: the crossing is open there if that is where it lies.
-        if ((inside(xi) && inside(eta)) || (past_end && std::abs(xi) < 1.5 && std::abs(eta) < 1.5))
-          consider(ea, eb, xi, eta, PinnedParameter::kNone, centerline_point(a, xi), centerline_point(b, eta), past_end);
-      }
-      // Shared nodes: the end (parameter 1) of each element of the neighbourhood but its last.
-      if (ea < last_a) {
-        const V3<double> node = centerline_point(a, 1.0);
-        double projected = eta;
-        if (project_point(node, b, projected) && inside(projected))
-          consider(ea, eb, 1.0, projected, PinnedParameter::kSlave, node, centerline_point(b, projected));
-        if (eb < last_b) consider(ea, eb, 1.0, 1.0, PinnedParameter::kBoth, node, centerline_point(b, 1.0));
-      }
-      if (eb < last_b) {
-        const V3<double> node = centerline_point(b, 1.0);
-        double projected = xi;
-        if (project_point(node, a, projected) && inside(projected))
-          consider(ea, eb, projected, 1.0, PinnedParameter::kMaster, centerline_point(a, projected), node);
-      }
-    }
-  }
-  if (beyond_wire_end) return CrossingLocation{};
-  return best;
 }
 
 }  // namespace
@@ -389,7 +251,7 @@ double ContactSet::reference_gap(const Mesh& mesh, const ContactPoint& p) const 
     return std::sqrt(dot(d, d)) - radii;
   }
   const LineContactGroup& g = groups_[p.group];
-  const FootPoint foot = project_onto_wire(mesh, reference, g, centerline_point(centerline(mesh, reference, g.slave_element), p.xi), -1, 0.0);
+  const FootPoint foot = project_onto_wire(mesh, reference, g.wire_b, g.candidates, centerline_point(centerline(mesh, reference, g.slave_element), p.xi), -1, 0.0);
   return foot.element >= 0 ? foot.distance - radii : 0.0;
 }
 
@@ -407,7 +269,7 @@ void ContactSet::evaluate_point(const Mesh& mesh, const std::vector<NodeState>& 
   } else {
     const LineContactGroup& g = groups_[p.group];
     const auto a = pose(mesh, state, g.slave_element);
-    const FootPoint foot = project_onto_wire(mesh, state, g, centerline_point(a.x, p.xi), p.element_b, p.eta);
+    const FootPoint foot = project_onto_wire(mesh, state, g.wire_b, g.candidates, centerline_point(a.x, p.xi), p.element_b, p.eta);
     if (foot.element >= 0) {
       const auto b = pose(mesh, state, mesh.wires[g.wire_b].elements[foot.element]);
       evaluate_contact_into(p, a, b, p.element_a, foot.element, p.xi, foot.eta, settings_.strand_axis, with_tangent,

@@ -1,5 +1,6 @@
 #include "strandfem/io/case_file.hpp"
 #include "strandfem/io/contact_keys.hpp"
+#include "strandfem/io/solver_keys.hpp"
 #include "strandfem/io/yaml_document.hpp"
 
 #include <fmt/format.h>
@@ -25,7 +26,6 @@ constexpr int kMaxWiresPerLayer = 1000;
 constexpr int kMaxElementsPerLine = (kMaxModelNodes - 1) / 2;
 constexpr int kMaxIncrementsPerStep = 1000000;
 constexpr int kMaxCycles = 10000;
-constexpr int kMaxThreadsAsked = std::numeric_limits<int>::max();  // the program caps it at the machine's count
 const char* const kComponentNames[6] = {"ux", "uy", "uz", "rx", "ry", "rz"};
 
 std::string at(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
@@ -50,7 +50,7 @@ class CaseParser {
     if (has_strand && root["hubs"]) reader_.fail(root["hubs"], "hubs", "strands have their rigid end planes built in");
     if (root["supports"]) parse_supports(root["supports"]);
     parse_steps(reader_.require(root, "", "steps"));
-    if (root["solver"]) parse_solver(root["solver"]);
+    if (root["solver"]) parse_solver_options(reader_, root["solver"], out_.model.options);
     if (root["contact"])
       out_.model.contact_settings = parse_contact_settings(reader_, root["contact"], materials_, out_.strand.has_value());
     if (root["output"]) parse_output(root["output"]);
@@ -475,35 +475,6 @@ class CaseParser {
           add_action(step, index, {NodalAction::kMotion, n, c, reader_.number(v, p + "." + kComponentNames[c]) * (c >= 3 ? kDegree : 1.0)}, v,
                      p + "." + kComponentNames[c]);
     }
-  }
-
-  void parse_solver(const YAML::Node& node) {
-    reader_.check_keys(node, "solver", {"force_tolerance", "moment_tolerance", "displacement_tolerance", "max_iterations",
-                                        "max_cutbacks", "line_search_cuts", "linear_solver", "threads",
-                                        "krylov_iterations", "refinement_iterations", "krylov_tolerance", "newton_forcing", "extrapolate",
-                                        "stabilization", "stabilization_ramp_off"});
-    SolverOptions& o = out_.model.options;
-    if (node["force_tolerance"]) o.force_tolerance = reader_.positive(node["force_tolerance"], "solver.force_tolerance", "-");
-    if (node["moment_tolerance"]) o.moment_tolerance = reader_.positive(node["moment_tolerance"], "solver.moment_tolerance", "-");
-    if (node["displacement_tolerance"]) o.displacement_tolerance = reader_.positive(node["displacement_tolerance"], "solver.displacement_tolerance", "-");
-    if (node["max_iterations"]) o.max_iterations = reader_.integer(node["max_iterations"], "solver.max_iterations", 1, 1000);
-    if (node["max_cutbacks"]) o.max_cutbacks = reader_.integer(node["max_cutbacks"], "solver.max_cutbacks", 0, 30);
-    if (node["line_search_cuts"]) o.line_search_cuts = reader_.integer(node["line_search_cuts"], "solver.line_search_cuts", 0, 20);
-    if (node["linear_solver"]) o.linear_solver = reader_.choice(node["linear_solver"], "solver.linear_solver", {"mumps", "mumps_single", "umfpack"});
-    if (node["threads"]) o.threads = reader_.integer(node["threads"], "solver.threads", 0, kMaxThreadsAsked);
-    if (node["krylov_iterations"]) o.krylov_iterations = reader_.integer(node["krylov_iterations"], "solver.krylov_iterations", 0, 200);
-    if (node["refinement_iterations"])
-      o.refinement_iterations = reader_.integer(node["refinement_iterations"], "solver.refinement_iterations", 1, 200);
-    if (node["krylov_tolerance"]) o.krylov_tolerance = reader_.positive(node["krylov_tolerance"], "solver.krylov_tolerance", "-");
-    if (node["newton_forcing"]) o.newton_forcing = reader_.number(node["newton_forcing"], "solver.newton_forcing");
-    if (node["extrapolate"]) o.extrapolate = reader_.boolean(node["extrapolate"], "solver.extrapolate");
-    if (node["stabilization"]) {
-      o.stabilization = reader_.number(node["stabilization"], "solver.stabilization");
-      if (!(o.stabilization >= 0 && o.stabilization < 1))
-        reader_.fail(node["stabilization"], "solver.stabilization", "expected a fraction of the wires' elastic stiffness in [0, 1)");
-    }
-    if (node["stabilization_ramp_off"])
-      o.stabilization_ramp_off = reader_.boolean(node["stabilization_ramp_off"], "solver.stabilization_ramp_off");
   }
 
   void parse_output(const YAML::Node& node) {
