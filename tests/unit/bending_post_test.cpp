@@ -29,6 +29,25 @@ TEST(TensionedBeam, MidspanOfTheCurveIsEq31AndSymmetricLimitsHold) {
   EXPECT_GT(tensioned_beam_midspan_deflection(V, T, 82.7e6, L), tensioned_beam_midspan_deflection(V, T, 6357.8e6, L));
 }
 
+// The Timoshenko form: eq. 3.2 as the shear stiffness grows, the clamped-clamped Timoshenko beam (bending plus
+// V x / (2S)) without tension, and next to a clamp above eq. 3.2 by most of V x / (2S) (the tension takes the
+// rest: the bending part falls by (1 - T/S)^2).
+TEST(TensionedBeam, TimoshenkoFormHasBothLimits) {
+  const double V = 40000, T = 280000, L = 1000, EI = 82.7e6;
+  for (const double x : {5.0, 100.0, 500.0})
+    EXPECT_NEAR(tensioned_timoshenko_deflection(V, T, EI, 1e18, L, x), tensioned_beam_deflection(V, T, EI, L, x),
+                1e-9 * tensioned_beam_deflection(V, T, EI, L, x));
+  const double S = 3.7e7, stiff = 1e9, small_T = 1e-3;
+  const double euler_bernoulli_midspan = V * L * L * L / (192 * stiff);
+  for (const double x : {5.0, 250.0, 500.0}) {
+    const double timoshenko = V * x * x * (3 * L - 4 * x) / (48 * stiff) + V * x / (2 * S);
+    EXPECT_NEAR(tensioned_timoshenko_deflection(V, small_T, stiff, S, L, x), timoshenko, 1e-4 * euler_bernoulli_midspan);
+  }
+  const double shear_part = tensioned_timoshenko_deflection(V, T, EI, S, L, 5.0) - tensioned_beam_deflection(V, T, EI, L, 5.0);
+  EXPECT_GT(shear_part, 0.75 * V * 5.0 / (2 * S));
+  EXPECT_LT(shear_part, V * 5.0 / (2 * S));
+}
+
 TEST(TensionedBeam, EquivalentStiffnessInvertsEq31) {
   const double T = 280000, L = 1000, V = 40000;
   for (const double EI : {82.7e6, 1e9, 6357.8e6}) {

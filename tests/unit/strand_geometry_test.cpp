@@ -101,6 +101,14 @@ TEST(AnalyticReferenceTest, PapailiouBoundsReproduceThePaper) {
   EXPECT_NEAR(s.ei_max * 1e-6 / 6357.8, 0.985, 0.005);
 }
 
+// The wires' shear stiffness for the Timoshenko EImin curve: sum n kappa G A cos(alpha), Cowper's kappa of the sections.
+TEST(AnalyticReferenceTest, WireShearStiffnessSumsTheWiresSections) {
+  StrandSpec s = make({{1, 3.94, 0}, {6, 3.73, 11.8}}, {{"steel", {188000, 0.3, 7.85e-9}}}, {"steel", "steel"});
+  const double kappa = 7.8 / 8.8, G = 188000 / 2.6;
+  const double expected = kappa * G * std::numbers::pi / 4 * (3.94 * 3.94 + 6 * 3.73 * 3.73 * std::cos(11.8 * kDeg));
+  EXPECT_NEAR(bending_stiffness_bounds(s).wire_shear_stiffness / expected, 1.0, 1e-12);
+}
+
 TEST(AnalyticReferenceTest, LinearStrandStiffnessLimits) {
   StrandSpec s = make({{1, 3.94, 0}, {6, 3.73, 11.8}}, {{"steel", {188000, 0.3, 7.85e-9}}}, {"steel", "steel"});
   const LinearStrandStiffness k = linear_strand_stiffness(s);

@@ -183,8 +183,8 @@ TEST(Resume, RefusesTheCheckpointOfAnotherCase) {
   EXPECT_EQ(read_csv(results / "history.csv").size(), 2u);
 }
 
-// A checkpoint of an earlier format (format 4's statistics lack the residual and commit times, format 3's contact
-// rows three columns) is refused before anything is read, and the stopped run's results stay as they were.
+// A checkpoint of an earlier format (format 5's deflection curves lack a column, format 4's statistics the residual
+// and commit times) is refused before anything is read, and the stopped run's results stay as they were.
 TEST(Resume, RefusesACheckpointOfAnEarlierFormat) {
   const ProgramRun first = run_case(kCase, "resume_format", "--stop-after 2");
   ASSERT_EQ(first.exit_code, 5) << first.stderr_text;
@@ -195,8 +195,8 @@ TEST(Resume, RefusesACheckpointOfAnEarlierFormat) {
     checkpoint.seekg(28);
     int version = 0;
     checkpoint.read(reinterpret_cast<char*>(&version), sizeof version);
-    ASSERT_EQ(version, 5);
-    version = 4;
+    ASSERT_EQ(version, 6);
+    version = 5;
     checkpoint.seekp(28);
     checkpoint.write(reinterpret_cast<const char*>(&version), sizeof version);
   }

@@ -15,9 +15,10 @@ BendingWriter::BendingWriter(const std::filesystem::path& directory, const CaseD
   const BendingStiffnessBounds bounds = bending_stiffness_bounds(*c.strand);
   ei_max_ = bounds.ei_max;
   ei_min_ = bounds.ei_min;
+  wire_shear_stiffness_ = bounds.wire_shear_stiffness;
   if (resuming) return;
   curves_.open(directory / "deflection_curves.csv");
-  curves_.stream() << "cycle,transverse_load_N,axial_force_N,z_mm,deflection_mm,eq32_ei_max_mm,eq32_ei_min_mm\n";
+  curves_.stream() << "cycle,transverse_load_N,axial_force_N,z_mm,deflection_mm,eq32_ei_max_mm,eq32_ei_min_mm,eq32_ei_min_shear_mm\n";
   curves_.end_row();
 }
 
@@ -37,10 +38,12 @@ void BendingWriter::on_increment(const StaticAnalysis& analysis, const Increment
   for (const int node : model.mesh.wires[0].nodes) {
     const Vec3 u = analysis.state()[node].position - model.mesh.nodes[node].reference.position;
     const double z = model.mesh.nodes[node].reference.position.z(), x = std::min(z, length - z);
-    curves_.stream() << fmt::format("{},{:.8g},{:.8g},{:.6f},{:.8g},{:.8g},{:.8g}\n", report.origin.cycle, transverse_load, axial_force, z,
-                           std::hypot(u.x(), u.y()),
-                           tensioned_beam_deflection(transverse_load, axial_force, ei_max_, length, x),
-                           tensioned_beam_deflection(transverse_load, axial_force, ei_min_, length, x));
+    curves_.stream() << fmt::format("{},{:.8g},{:.8g},{:.6f},{:.8g},{:.8g},{:.8g},{:.8g}\n", report.origin.cycle, transverse_load,
+                                    axial_force, z, std::hypot(u.x(), u.y()),
+                                    tensioned_beam_deflection(transverse_load, axial_force, ei_max_, length, x),
+                                    tensioned_beam_deflection(transverse_load, axial_force, ei_min_, length, x),
+                                    tensioned_timoshenko_deflection(transverse_load, axial_force, ei_min_,
+                                                                    wire_shear_stiffness_, length, x));
   }
   curves_.end_row();
 }

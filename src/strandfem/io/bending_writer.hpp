@@ -33,6 +33,7 @@ class BendingWriter {
   const CaseDefinition& case_;
   bool active_ = false;
   double ei_max_ = 0, ei_min_ = 0;   // N mm^2 (eqs. 1.1, 1.2)
+  double wire_shear_stiffness_ = 0;  // N, for the EImin curve with the wires' shear flexibility
   AppendedFile curves_;
   std::vector<LoadDeflectionPoint> history_;
 };

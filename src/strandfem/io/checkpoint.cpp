@@ -16,9 +16,11 @@ constexpr const char* kMagic = "StrandFEM checkpoint";
 // 3: the fingerprint leaves out the steps' cycle counts, which follow it, so that a resume may add cycles.
 // 4: the same content; contacts.csv has three more columns (interface, mu1, mu2), so a run that writes it does
 //    not continue one of an earlier version, whose rows have fewer.
-// 5: the analysis statistics add the residual and commit times. Only this version is read: the statistics of
-//    the earlier ones have another layout.
-constexpr int kFormatVersion = 5;
+// 5: the analysis statistics add the residual and commit times. The statistics of the earlier ones have another
+//    layout.
+// 6: the same content; deflection_curves.csv has one more column (eq32_ei_min_shear_mm), so a run that writes it
+//    does not continue one of an earlier version. Only this version is read.
+constexpr int kFormatVersion = 6;
 
 std::string fnv1a_hex(const std::string& text) {
   std::uint64_t hash = 14695981039346656037ULL;

@@ -1,5 +1,7 @@
 #include "strandfem/post/analytic.hpp"
 
+#include "strandfem/beam/section.hpp"
+
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -16,11 +18,13 @@ BendingStiffnessBounds bending_stiffness_bounds(const StrandSpec& strand) {
   BendingStiffnessBounds b;
   for (std::size_t i = 0; i < strand.layers.size(); ++i) {
     const LayerSpec& layer = strand.layers[i];
-    const double E = material_of(strand, layer).youngs_modulus;
-    const double r = 0.5 * layer.wire_diameter;
-    const double area = std::numbers::pi * r * r, inertia = std::numbers::pi * std::pow(r, 4) / 4.0;
+    const Material& m = material_of(strand, layer);
+    const double E = m.youngs_modulus;
+    const SectionGeometry section = SectionGeometry::circle(layer.wire_diameter, m.poisson_ratio);
+    const double area = section.area, inertia = section.inertia_2;
     const double c = std::cos(layer.lay_angle), R = layer_radius(strand, static_cast<int>(i));
     b.ei_min += layer.wires * E * inertia * c;
+    b.wire_shear_stiffness += layer.wires * section.shear_factor * m.shear_modulus() * area * c;
     b.ei_max += layer.wires * (E * inertia * c + 0.5 * E * area * R * R * c * c * c);
   }
   return b;

@@ -8,9 +8,12 @@ namespace strandfem {
 
 // Papailiou's bounds (1997), as used by the paper (eqs. 1.1, 1.2), summed over layers (core: alpha = 0, R = 0):
 //   EImin = sum n E I0 cos(alpha),  EImax = EImin + sum 1/2 n E A R^2 cos^3(alpha).   [N mm^2]
+// With them, the wires' transverse shear stiffness for the Timoshenko form of eq. 3.2 (tensioned_timoshenko_deflection):
+//   S = sum n kappa G A cos(alpha), kappa = 6 (1 + nu) / (7 + 6 nu) as in the elements' sections (Cowper).  [N]
 struct BendingStiffnessBounds {
   double ei_min = 0;
   double ei_max = 0;
+  double wire_shear_stiffness = 0;
 };
 BendingStiffnessBounds bending_stiffness_bounds(const StrandSpec& strand);
 

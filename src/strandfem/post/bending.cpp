@@ -15,6 +15,13 @@ double tensioned_beam_deflection(double load, double tension, double bending_sti
   return load * k / (2.0 * tension) * bracket;
 }
 
+double tensioned_timoshenko_deflection(double load, double tension, double bending_stiffness, double shear_stiffness,
+                                       double span, double x) {
+  const double reduction = 1.0 - tension / shear_stiffness;
+  return reduction * reduction * tensioned_beam_deflection(load, tension * reduction, bending_stiffness, span, x) +
+         0.5 * load * x / shear_stiffness;
+}
+
 double tensioned_beam_midspan_deflection(double load, double tension, double bending_stiffness, double span) {
   const double k = std::sqrt(bending_stiffness / tension);
   return load / tension * (0.25 * span - k * std::tanh(0.25 * span / k));

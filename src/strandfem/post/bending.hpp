@@ -12,6 +12,14 @@ namespace strandfem {
 // It tends to the Euler-Bernoulli V x^2 (3L - 4x) / (48 EI) as T -> 0 and to the string V x / (2T) as EI -> 0.
 double tensioned_beam_deflection(double load, double tension, double bending_stiffness, double span, double x);
 
+// The same beam with the shear flexibility of Timoshenko's theory, shear stiffness S = kappa G A (N, S > T), the
+// axial force acting along the section normal as in the beam elements. With the section rotation theta held at
+// both clamps and at midspan, EI theta'' - T (1 - T/S) theta = -V/2 (1 - T/S) gives
+//   y(x) = (1 - T/S)^2 y_3.2(x; EI, T (1 - T/S)) + V x / (2S),
+// which is eq. 3.2 as S -> infinity and V x^2 (3L - 4x) / (48 EI) + V x / (2S) as T -> 0.
+double tensioned_timoshenko_deflection(double load, double tension, double bending_stiffness, double shear_stiffness,
+                                       double span, double x);
+
 // Midspan value of the same curve (eq. 3.1): y_max = V/T (L/4 - k tanh(L / (4k))).
 double tensioned_beam_midspan_deflection(double load, double tension, double bending_stiffness, double span);
 
