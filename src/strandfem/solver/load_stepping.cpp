@@ -80,8 +80,8 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
       // (Cardinal's tension ramp: 43 corrections and 4 factorizations plain, 76-197 and up to 76 extrapolated).
       // Where the step moves driven DOFs the plain predictor strains the elements next to them alone (docs/theory.md).
       const bool secant_predictor = moves_driven_dofs || !(model_.options.stabilization > 0);
-      const double extrapolation = model_.options.extrapolate && secant_predictor && p.last_size > 0 && cutbacks == 0 &&
-                                           !plain_retry && !p.extrapolation_failed
+      const double extrapolation = model_.options.extrapolate && secant_predictor && !idle_step && p.last_size > 0 &&
+                                           cutbacks == 0 && !plain_retry && !p.extrapolation_failed
                                        ? (target - p.fraction) / p.last_size
                                        : 0.0;
       const bool retrying_plain = plain_retry;
