@@ -32,18 +32,23 @@ void BendingWriter::on_increment(const StaticAnalysis& analysis, const Increment
   if (report.origin.cycle > 0 && report.origin.returning && ramp_end) finish();
   const bool peak = report.origin.cycle > 0 && !report.origin.returning && ramp_end;
   if (!peak) return;
-  // The core's transverse deflection along the strand beside eq. 3.2 (x from the nearer clamp).
+  // The core's transverse deflection along the strand beside eq. 3.2 (x from the nearer clamp). The shear form is
+  // taken on the span as the tension stretched it: the sections' laws are per reference length, so on the current
+  // length they act as EI and S times the stretch (docs/theory.md, "Deflection references with shear").
   const Model& model = analysis.model();
   const double length = case_.axial_length;
-  for (const int node : model.mesh.wires[0].nodes) {
+  const std::vector<int>& core = model.mesh.wires[0].nodes;
+  const double stretch = (analysis.state()[core.back()].position.z() - analysis.state()[core.front()].position.z()) / length;
+  for (const int node : core) {
     const Vec3 u = analysis.state()[node].position - model.mesh.nodes[node].reference.position;
     const double z = model.mesh.nodes[node].reference.position.z(), x = std::min(z, length - z);
     curves_.stream() << fmt::format("{},{:.8g},{:.8g},{:.6f},{:.8g},{:.8g},{:.8g},{:.8g}\n", report.origin.cycle, transverse_load,
                                     axial_force, z, std::hypot(u.x(), u.y()),
                                     tensioned_beam_deflection(transverse_load, axial_force, ei_max_, length, x),
                                     tensioned_beam_deflection(transverse_load, axial_force, ei_min_, length, x),
-                                    tensioned_timoshenko_deflection(transverse_load, axial_force, ei_min_,
-                                                                    wire_shear_stiffness_, length, x));
+                                    tensioned_timoshenko_deflection(transverse_load, axial_force, stretch * ei_min_,
+                                                                    stretch * wire_shear_stiffness_, stretch * length,
+                                                                    stretch * x));
   }
   curves_.end_row();
 }
