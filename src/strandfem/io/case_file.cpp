@@ -550,52 +550,8 @@ CaseDefinition load_case(const std::string& path) {
   yaml_text << root;
   c.resolved["case_file"] = path;
   c.resolved["case"] = yaml_text.str();
-  c.resolved["solver"] = {{"force_tolerance", c.model.options.force_tolerance},
-                          {"moment_tolerance", c.model.options.moment_tolerance},
-                          {"displacement_tolerance", c.model.options.displacement_tolerance},
-                          {"max_iterations", c.model.options.max_iterations},
-                          {"max_cutbacks", c.model.options.max_cutbacks},
-                          {"line_search_cuts", c.model.options.line_search_cuts},
-                          {"linear_solver", c.model.options.linear_solver},
-                          {"krylov_iterations", c.model.options.krylov_iterations},
-                          {"refinement_iterations", c.model.options.refinement_iterations},
-                          {"krylov_tolerance", c.model.options.krylov_tolerance},
-                          {"newton_forcing", c.model.options.newton_forcing},
-                          {"extrapolate", c.model.options.extrapolate},
-                          {"stabilization", c.model.options.stabilization},
-                          {"stabilization_ramp_off", c.model.options.stabilization_ramp_off},
-                          {"threads", c.model.options.threads}};
-  const ContactSettings& k = c.model.contact_settings;
-  c.resolved["contact"] = {{"enabled", k.enabled}, {"friction", k.friction}, {"orthotropy_ratio", k.orthotropy_ratio},
-                           {"normal_factor", k.normal_factor}, {"tangential_factor", k.tangential_factor},
-                           {"normal_multiplier", k.normal_multiplier}, {"tangential_multiplier", k.tangential_multiplier},
-                           {"tangential_penalty", k.tangential_penalty == TangentialPenalty::kPaper ? "paper" : "elastic_slip"},
-                           {"elastic_slip", k.elastic_slip}, {"search_margin", k.search_margin}, {"pattern_margin", k.pattern_margin}, {"line_contact_angle", k.line_contact_angle},
-                           {"line_points", k.line_points},
-                           {"initial_overlap", k.initial_overlap == InitialOverlap::kOffset ? "offset" : "keep"}, {"touch_tolerance", k.touch_tolerance},
-                           {"normal_smoothing", k.normal_smoothing}, {"stabilization", k.stabilization},
-                           {"zones", k.zone_friction.size()}};
-  // Each material pair with the coefficient and the mu2/mu1 it runs with (outside zones) on the interfaces it
-  // names; mu and orthotropy_ratio also at the top where they are the same on all of them.
-  nlohmann::json pairs = nlohmann::json::array();
-  for (const MaterialPairFriction& p : k.pair_friction) {
-    nlohmann::json entry = {{"materials", {p.material_a, p.material_b}},
-                            {"contacts", p.interface ? to_string(*p.interface) : "all"}};
-    std::vector<std::pair<double, double>> values;
-    for (ContactInterface on : {ContactInterface::kLateral, ContactInterface::kRadial}) {
-      if (p.interface && *p.interface != on) continue;
-      const double mu = k.friction_outside_zones(p.material_a, p.material_b, on);
-      const double ratio = k.orthotropy_at(p.material_a, p.material_b, on);
-      entry[to_string(on)] = {{"mu", mu}, {"orthotropy_ratio", ratio}};
-      values.emplace_back(mu, ratio);
-    }
-    if (values.size() == 1 || values[0] == values[1]) {
-      entry["mu"] = values[0].first;
-      entry["orthotropy_ratio"] = values[0].second;
-    }
-    pairs.push_back(entry);
-  }
-  c.resolved["contact"]["pairs"] = pairs;
+  c.resolved["solver"] = resolved_solver_options(c.model.options);
+  c.resolved["contact"] = resolved_contact_settings(c.model.contact_settings);
   return c;
 }
 

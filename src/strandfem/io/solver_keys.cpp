@@ -35,4 +35,22 @@ void parse_solver_options(const YamlReader& reader, const YAML::Node& node, Solv
     o.stabilization_ramp_off = reader.boolean(node["stabilization_ramp_off"], "solver.stabilization_ramp_off");
 }
 
+nlohmann::json resolved_solver_options(const SolverOptions& o) {
+  return {{"force_tolerance", o.force_tolerance},
+          {"moment_tolerance", o.moment_tolerance},
+          {"displacement_tolerance", o.displacement_tolerance},
+          {"max_iterations", o.max_iterations},
+          {"max_cutbacks", o.max_cutbacks},
+          {"line_search_cuts", o.line_search_cuts},
+          {"linear_solver", o.linear_solver},
+          {"krylov_iterations", o.krylov_iterations},
+          {"refinement_iterations", o.refinement_iterations},
+          {"krylov_tolerance", o.krylov_tolerance},
+          {"newton_forcing", o.newton_forcing},
+          {"extrapolate", o.extrapolate},
+          {"stabilization", o.stabilization},
+          {"stabilization_ramp_off", o.stabilization_ramp_off},
+          {"threads", o.threads}};
+}
+
 }  // namespace strandfem
