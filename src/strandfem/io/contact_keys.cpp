@@ -7,7 +7,6 @@
 namespace strandfem {
 
 namespace {
-std::string at(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
 
 std::string material_name(const YamlReader& reader, const YAML::Node& node, const std::string& path,
                           const std::map<std::string, Material>& materials) {
@@ -48,7 +47,7 @@ ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Nod
   if (const YAML::Node pairs = node["friction_pairs"]) {
     if (!pairs.IsSequence()) reader.fail(pairs, "contact.friction_pairs", "expected a list of {materials: [a, b], mu}");
     for (std::size_t i = 0; i < pairs.size(); ++i) {
-      const std::string path = at("contact.friction_pairs", i);
+      const std::string path = list_item("contact.friction_pairs", i);
       reader.check_keys(pairs[i], path, {"materials", "mu", "orthotropy_ratio", "contacts"});
       MaterialPairFriction f;
       std::tie(f.material_a, f.material_b) =
@@ -63,7 +62,7 @@ ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Nod
   if (const YAML::Node zones = node["friction_zones"]) {
     if (!zones.IsSequence()) reader.fail(zones, "contact.friction_zones", "expected a list of {z: [z_min, z_max], mu}");
     for (std::size_t i = 0; i < zones.size(); ++i) {
-      const std::string path = at("contact.friction_zones", i);
+      const std::string path = list_item("contact.friction_zones", i);
       reader.check_keys(zones[i], path, {"z", "mu", "materials", "contacts"});
       const auto z = reader.numbers(reader.require(zones[i], path, "z"), path + ".z", 2);
       if (!(z[1] > z[0])) reader.fail(zones[i]["z"], path + ".z", "expected [z_min, z_max] with z_max > z_min (mm)");
@@ -72,7 +71,7 @@ ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Nod
         const std::string expected = "expected a list of material pairs, e.g. [[aluminum, aluminum], [aluminum, steel]]";
         if (!pairs.IsSequence() || pairs.size() == 0) reader.fail(pairs, path + ".materials", expected);
         for (std::size_t k = 0; k < pairs.size(); ++k)
-          zone.material_pairs.push_back(material_pair(reader, pairs[k], at(path + ".materials", k), materials, expected));
+          zone.material_pairs.push_back(material_pair(reader, pairs[k], list_item(path + ".materials", k), materials, expected));
       }
       c.zone_friction.push_back(zone);
     }

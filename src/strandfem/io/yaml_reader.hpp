@@ -19,6 +19,9 @@ struct CaseError : std::runtime_error {
 constexpr double kMaxNumberMagnitude = 1e15;
 constexpr double kMinPositiveValue = 1e-12;
 
+// The path of item i of the list at `path`: "steps[2]".
+inline std::string list_item(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
+
 class YamlReader {
  public:
   explicit YamlReader(std::string file) : file_(std::move(file)) {}

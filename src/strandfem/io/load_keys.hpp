@@ -1,0 +1,49 @@
+// The case file's `supports:` and `steps:` keys: supports, load steps and their nodal actions, refusing the
+// contradictory ones (a DOF driven twice in a step, a load where a support or a motion holds it).
+#pragma once
+#include <functional>
+#include <map>
+#include <string>
+#include <utility>
+
+#include "strandfem/analysis/strand_builder.hpp"
+#include "strandfem/io/case_file.hpp"
+#include "strandfem/io/yaml_reader.hpp"
+
+namespace strandfem {
+
+class LoadKeys {
+ public:
+  // The case's node selectors (strand core positions, beam points, hubs), as the case reader resolves them.
+  using NodeSelector = std::function<int(const YAML::Node&, const std::string&)>;
+  LoadKeys(const YamlReader& reader, CaseDefinition& out, NodeSelector node_at)
+      : reader_(reader), out_(out), node_at_(std::move(node_at)) {}
+
+  // DOFs the model holds before any key is read (a strand's clamps), named `holder` in messages.
+  void hold(const Support& support, const std::string& holder);
+  // `supports:` (docs/case-files.md) into out.model.supports.
+  void parse_supports(const YAML::Node& node);
+  // `steps:` into out.model.steps; `strand`: the strand's built parts, whose nodes the strand loads act on (null
+  // for beam cases).
+  void parse_steps(const YAML::Node& node, const StrandModelParts* strand);
+
+ private:
+  void add_action(LoadStep& step, int step_index, const NodalAction& action, const YAML::Node& where, const std::string& path);
+  void parse_strand_actions(const YAML::Node& s, const std::string& path, int index, const StrandModelParts& strand,
+                            LoadStep& step);
+  void parse_forces(const YAML::Node& node, const std::string& path, int index, LoadStep& step);
+  void parse_motions(const YAML::Node& node, const std::string& path, int index, LoadStep& step);
+
+  const YamlReader& reader_;
+  CaseDefinition& out_;
+  NodeSelector node_at_;
+  // The keys that hold or drive each DOF (first support, motion, non-zero force; the last step that acted on it):
+  // contradictions name both keys.
+  struct DofUse {
+    std::string support, motion, force, last_path;
+    int last_step = -1;
+  };
+  std::map<std::pair<int, int>, DofUse> dof_uses_;
+};
+
+}  // namespace strandfem
