@@ -6,7 +6,7 @@
 #include <numbers>
 
 #include "program_runner.hpp"
-#include "strandfem/post/bending.hpp"
+#include "thick_bar.hpp"
 
 namespace strandfem::verification {
 namespace {
@@ -82,18 +82,13 @@ TEST(BeamBenchmarks, HelicalWireAgainstCastigliano) {
 TEST(BeamBenchmarks, TensionedThickBeamFollowsTheTimoshenkoCurve) {
   const ProgramRun r = run_case("cases/verification/tensioned_thick_beam.yaml", "tensioned_thick");
   ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
-  const double E = 200000, nu = 0.3, d = 20, L = 200, T = 157080, V = 2000;
-  const double A = std::numbers::pi * d * d / 4, I = std::numbers::pi * std::pow(d, 4) / 64;
-  const double kappa = 6 * (1 + nu) / (7 + 6 * nu), S = kappa * E / (2 * (1 + nu)) * A, stretch = 1 + T / (E * A);
+  const ThickBar bar;
   const auto nodes = read_csv(r.output / "results" / "displacements.csv");
   ASSERT_EQ(nodes.size(), 81u);
-  const double midspan = tensioned_timoshenko_deflection(V, T, E * I * stretch, S * stretch, L * stretch, 0.5 * L * stretch);
-  for (const auto& node : nodes) {
-    const double x = std::min(node.at("z0"), L - node.at("z0")) * stretch;
-    EXPECT_NEAR(node.at("uy"), tensioned_timoshenko_deflection(V, T, E * I * stretch, S * stretch, L * stretch, x), 1e-5 * midspan)
-        << "z = " << node.at("z0");
-  }
-  EXPECT_LT(tensioned_beam_deflection(V, T, E * I * stretch, L * stretch, 0.5 * L * stretch), 0.95 * midspan);
+  const double midspan = bar.deflection(0.5 * bar.L);
+  for (const auto& node : nodes) EXPECT_NEAR(node.at("uy"), bar.deflection(node.at("z0")), 1e-5 * midspan) << "z = " << node.at("z0");
+  const double s = bar.stretch();
+  EXPECT_LT(tensioned_beam_deflection(bar.V, bar.T, bar.E * bar.inertia() * s, bar.L * s, 0.5 * bar.L * s), 0.95 * midspan);
 }
 
 }  // namespace
