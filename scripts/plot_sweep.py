@@ -3,6 +3,8 @@
 
 - bending cases (a transverse load in history.csv): midspan load V against midspan deflection, every cycle, with
   eq. 3.1's EImax and EImin lines up to the peak load (from the first variant's summary.json that has a loop);
+  beside it, where the variants wrote deflection_curves.csv, the core's deflection at the first peak over the
+  15 % of the span next to the clamp at z = 0 (the paper's 0-150 mm of its 1 m strands), with eq. 3.2's curves;
 - axial cases: axial force against axial strain.
 
 One curve per row of sweep.csv (its variant name in the legend); a variant without results is left out.
@@ -35,6 +37,33 @@ def draw_eq31_bounds(ax, folder, variants):
         return
 
 
+def draw_deflection_curves(ax, folder, variants):
+    """The core's deflection at the first peak near the clamp at z = 0, each variant, with eq. 3.2's two curves of
+    the first; False when no variant wrote deflection_curves.csv."""
+    drawn = False
+    for v in variants:
+        path = os.path.join(folder, v["results"], "deflection_curves.csv")
+        if not os.path.exists(path):
+            continue
+        rows = [r for r in csv.DictReader(open(path)) if r["cycle"] == "1"]
+        if not rows:
+            continue
+        length = max(float(r["z_mm"]) for r in rows)
+        near = [r for r in rows if float(r["z_mm"]) <= 0.15 * length + 1e-9]
+        z = [float(r["z_mm"]) for r in near]
+        if not drawn:
+            for key, name, style in (("eq32_ei_max_mm", "EImax (eq. 3.2)", "--"), ("eq32_ei_min_mm", "EImin (eq. 3.2)", ":")):
+                ax.plot(z, [float(r[key]) for r in near], style, color="gray", linewidth=1, label=name)
+        ax.plot(z, [float(r["deflection_mm"]) for r in near], marker=".", markersize=3, linewidth=1, label=v["variant"])
+        drawn = True
+    if drawn:
+        ax.set_xlabel("axial position from the clamp at z = 0 (mm)")
+        ax.set_ylabel("core deflection at the first peak (mm)")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7)
+    return drawn
+
+
 def main(folder):
     variants = list(csv.DictReader(open(os.path.join(folder, "sweep.csv"))))
     curves = []
@@ -49,7 +78,12 @@ def main(folder):
         print("no results to plot in", folder)
         return 1
     bending = any(abs(float(r["transverse_load_N"])) > 0 for _, rows in curves for r in rows)
-    fig, ax = plt.subplots(figsize=(6.4, 4.6))
+    has_curves = bending and any(os.path.exists(os.path.join(folder, v["results"], "deflection_curves.csv")) for v in variants)
+    if has_curves:
+        fig, (ax_curve, ax) = plt.subplots(1, 2, figsize=(11, 4.6))
+        draw_deflection_curves(ax_curve, folder, variants)
+    else:
+        fig, ax = plt.subplots(figsize=(6.4, 4.6))
     for name, rows in curves:
         if bending:
             # From the end of the tension ramp on: the state before the first transverse increment starts the loop.
@@ -68,7 +102,7 @@ def main(folder):
     else:
         ax.set_xlabel("axial strain")
         ax.set_ylabel("axial force (kN)")
-    ax.set_title(os.path.basename(os.path.abspath(folder)), fontsize=9)
+    fig.suptitle(os.path.basename(os.path.abspath(folder)), fontsize=9)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()
