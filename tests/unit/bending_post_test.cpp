@@ -48,6 +48,34 @@ TEST(TensionedBeam, TimoshenkoFormHasBothLimits) {
   EXPECT_LT(shear_part, V * 5.0 / (2 * S));
 }
 
+// The bounds check counts the nodes between the curves, leaves out the clamped end nodes and those inside the
+// clamp-edge offset, and reports the worst excess and shortfall with where they lie.
+TEST(TensionedBeam, CurveBoundsCheckCountsAndLocatesTheWorstNodes) {
+  const std::vector<CurveSample> curve = {
+      {0.0, 0.0, 0.0, 0.0},       // clamped end node: left out
+      {5.0, 0.0505, 0.01, 0.05},  // 1 % above
+      {10.0, 0.15, 0.04, 0.16},   // within
+      {20.0, 0.5, 0.12, 0.6},     // within
+      {30.0, 0.26, 0.28, 1.2},    // 0.02 below
+      {40.0, 2.0, 0.5, 1.99},     // 0.01 above: the larger excess in mm, the smaller in per cent
+  };
+  const CurveBoundsCheck all = check_curve_bounds(curve);
+  EXPECT_EQ(all.nodes, 5);
+  EXPECT_EQ(all.within, 2);
+  EXPECT_NEAR(all.largest_excess, 0.01, 1e-12);
+  EXPECT_EQ(all.largest_excess_x, 40.0);
+  EXPECT_NEAR(all.largest_excess_relative, 0.01 / 1.99, 1e-12);
+  EXPECT_NEAR(all.largest_shortfall, 0.02, 1e-12);
+  EXPECT_EQ(all.largest_shortfall_x, 30.0);
+  const CurveBoundsCheck beyond = check_curve_bounds(curve, 10.0);
+  EXPECT_EQ(beyond.nodes, 4);
+  EXPECT_EQ(beyond.within, 2);
+  const CurveBoundsCheck inner = check_curve_bounds({curve[2], curve[3]}, 10.0);
+  EXPECT_EQ(inner.within, inner.nodes);
+  EXPECT_EQ(inner.largest_excess, 0.0);
+  EXPECT_EQ(inner.largest_shortfall, 0.0);
+}
+
 TEST(TensionedBeam, EquivalentStiffnessInvertsEq31) {
   const double T = 280000, L = 1000, V = 40000;
   for (const double EI : {82.7e6, 1e9, 6357.8e6}) {

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "strandfem/post/analytic.hpp"
@@ -39,19 +40,38 @@ void BendingWriter::on_increment(const StaticAnalysis& analysis, const Increment
   const double length = case_.axial_length;
   const std::vector<int>& core = model.mesh.wires[0].nodes;
   const double stretch = (analysis.state()[core.back()].position.z() - analysis.state()[core.front()].position.z()) / length;
+  std::vector<CurveSample> curve;
   for (const int node : core) {
     const Vec3 u = analysis.state()[node].position - model.mesh.nodes[node].reference.position;
     const double z = model.mesh.nodes[node].reference.position.z(), x = std::min(z, length - z);
+    const double deflection = std::hypot(u.x(), u.y());
+    const double ei_max_curve = tensioned_beam_deflection(transverse_load, axial_force, ei_max_, length, x);
+    const double ei_min_curve = tensioned_beam_deflection(transverse_load, axial_force, ei_min_, length, x);
+    const double ei_min_shear_curve =
+        tensioned_timoshenko_deflection(transverse_load, axial_force, stretch * ei_min_, stretch * wire_shear_stiffness_,
+                                        stretch * length, stretch * x);
     curves_.stream() << fmt::format("{},{:.8g},{:.8g},{:.6f},{:.8g},{:.8g},{:.8g},{:.8g}\n", report.origin.cycle, transverse_load,
-                                    axial_force, z, std::hypot(u.x(), u.y()),
-                                    tensioned_beam_deflection(transverse_load, axial_force, ei_max_, length, x),
-                                    tensioned_beam_deflection(transverse_load, axial_force, ei_min_, length, x),
-                                    tensioned_timoshenko_deflection(transverse_load, axial_force, stretch * ei_min_,
-                                                                    stretch * wire_shear_stiffness_, stretch * length,
-                                                                    stretch * x));
+                                    axial_force, z, deflection, ei_max_curve, ei_min_curve, ei_min_shear_curve);
+    curve.push_back({x, deflection, ei_max_curve, std::max(ei_min_curve, ei_min_shear_curve)});
   }
   curves_.end_row();
+  curve_checks_.push_back({report.origin.cycle, check_curve_bounds(curve),
+                           check_curve_bounds(curve, case_.output.clamp_edge_offset)});
 }
+
+namespace {
+
+nlohmann::json curve_check_json(const CurveBoundsCheck& c) {
+  return {{"nodes", c.nodes},
+          {"within", c.within},
+          {"largest_excess_mm", c.largest_excess},
+          {"largest_excess_x_mm", c.largest_excess_x},
+          {"largest_excess_relative", c.largest_excess_relative},
+          {"largest_shortfall_mm", c.largest_shortfall},
+          {"largest_shortfall_x_mm", c.largest_shortfall_x}};
+}
+
+}  // namespace
 
 nlohmann::json BendingWriter::finish() {
   if (!active_) return nullptr;
@@ -76,22 +96,31 @@ nlohmann::json BendingWriter::finish() {
                        y_max, y_min, steady ? 1 : 0);
     rows.push_back({{"cycle", l.cycle}, {"area_Nmm", l.area}, {"friction_dissipation_Nmm", l.friction_dissipation},
                     {"peak_load_N", l.peak_load}, {"peak_deflection_mm", l.peak_deflection}, {"secant_ei_Nm2", 1e-6 * secant_ei},
-                    {"eq31_ei_max_mm", y_max}, {"eq31_ei_min_mm", y_min}, {"steady", steady}});
+                    {"eq31_ei_max_mm", y_max}, {"eq31_ei_min_mm", y_min},
+                    {"peak_within_eq31", y_max <= l.peak_deflection && l.peak_deflection <= y_min}, {"steady", steady}});
   }
   file.commit();
-  return {{"ei_max_Nm2", 1e-6 * ei_max_}, {"ei_min_Nm2", 1e-6 * ei_min_}, {"loops", rows}};
+  // Eq. 3.2's check at each peak: every interior core node, and those at or beyond the clamp-edge offset.
+  nlohmann::json curves = nlohmann::json::array();
+  for (const CurveCheckAtPeak& c : curve_checks_)
+    curves.push_back({{"cycle", c.cycle},
+                      {"all_nodes", curve_check_json(c.all_nodes)},
+                      {"beyond_clamp_edge", curve_check_json(c.beyond_clamp_edge)}});
+  return {{"ei_max_Nm2", 1e-6 * ei_max_}, {"ei_min_Nm2", 1e-6 * ei_min_}, {"loops", rows}, {"deflection_curves", curves}};
 }
 
 void BendingWriter::save_state(ArchiveWriter& out) const {
   out.section("bending");
   curves_.save_length(out);
   out.vector(history_);
+  out.vector(curve_checks_);
 }
 
 void BendingWriter::restore_state(ArchiveReader& in) {
   in.section("bending");
   curves_.resume_from(in, directory_ / "deflection_curves.csv", active_);
   history_ = in.vector<LoadDeflectionPoint>();
+  curve_checks_ = in.vector<CurveCheckAtPeak>();
 }
 
 }  // namespace strandfem

@@ -1,6 +1,6 @@
 // Writes the bending-under-tension results of cyclic strand cases: deflection_curves.csv (core deflection
 // along the strand at each cycle's peak load beside eq. 3.2 for EImax and EImin) and loops.csv (one row per
-// hysteresis loop), and summarizes them for summary.json.
+// hysteresis loop), and summarizes them for summary.json with the check of each peak's curve against eq. 3.2.
 #pragma once
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -34,8 +34,15 @@ class BendingWriter {
   bool active_ = false;
   double ei_max_ = 0, ei_min_ = 0;   // N mm^2 (eqs. 1.1, 1.2)
   double wire_shear_stiffness_ = 0;  // N, for the EImin curve with the wires' shear flexibility
+  // Eq. 3.2's bounds against the core's curve at one cycle's peak load.
+  struct CurveCheckAtPeak {
+    int cycle = 0;
+    CurveBoundsCheck all_nodes;          // every node but the clamped ends
+    CurveBoundsCheck beyond_clamp_edge;  // nodes at least output.clamp_edge_offset from a clamp
+  };
   AppendedFile curves_;
   std::vector<LoadDeflectionPoint> history_;
+  std::vector<CurveCheckAtPeak> curve_checks_;
 };
 
 }  // namespace strandfem

@@ -19,8 +19,9 @@ constexpr const char* kMagic = "StrandFEM checkpoint";
 // 5: the analysis statistics add the residual and commit times. The statistics of the earlier ones have another
 //    layout.
 // 6: the same content; deflection_curves.csv has one more column (eq32_ei_min_shear_mm), so a run that writes it
-//    does not continue one of an earlier version. Only this version is read.
-constexpr int kFormatVersion = 6;
+//    does not continue one of an earlier version.
+// 7: the bending state adds each peak's check of the core's curve against eq. 3.2. Only this version is read.
+constexpr int kFormatVersion = 7;
 
 std::string fnv1a_hex(const std::string& text) {
   std::uint64_t hash = 14695981039346656037ULL;

@@ -42,6 +42,26 @@ double equivalent_bending_stiffness(double compliance, double tension, double sp
   return tension * k * k;
 }
 
+CurveBoundsCheck check_curve_bounds(const std::vector<CurveSample>& curve, double from_clamp) {
+  CurveBoundsCheck check;
+  for (const CurveSample& s : curve) {
+    if (!(s.x > 0) || s.x < from_clamp) continue;
+    ++check.nodes;
+    const double excess = s.deflection - s.upper_bound, shortfall = s.lower_bound - s.deflection;
+    if (excess <= 0 && shortfall <= 0) ++check.within;
+    if (excess > check.largest_excess) {
+      check.largest_excess = excess;
+      check.largest_excess_x = s.x;
+      check.largest_excess_relative = s.upper_bound > 0 ? excess / s.upper_bound : 0.0;
+    }
+    if (shortfall > check.largest_shortfall) {
+      check.largest_shortfall = shortfall;
+      check.largest_shortfall_x = s.x;
+    }
+  }
+  return check;
+}
+
 std::vector<HysteresisLoop> hysteresis_loops(const std::vector<LoadDeflectionPoint>& history) {
   std::vector<HysteresisLoop> loops;
   for (std::size_t i = 0; i < history.size();) {

@@ -27,6 +27,29 @@ double tensioned_beam_midspan_deflection(double load, double tension, double ben
 // T: 0 when the compliance reaches the string's L/(4T), infinity when it is <= 0.
 double equivalent_bending_stiffness(double compliance, double tension, double span);
 
+// One core node of a deflection curve at a peak load beside eq. 3.2's bounds: x (mm) from the nearer clamp, the
+// node's deflection, the EImax curve (the stiffest strand, below) and the larger of the EImin curves with and
+// without the wires' shear (the softest, above).
+struct CurveSample {
+  double x = 0;
+  double deflection = 0;
+  double lower_bound = 0;
+  double upper_bound = 0;
+};
+
+// How a deflection curve lies between its bounds over the nodes at x >= from_clamp (and x > 0: the clamped
+// end nodes, where every curve is 0, are left out).
+struct CurveBoundsCheck {
+  int nodes = 0;                  // nodes checked
+  int within = 0;                 // of them, lower_bound <= deflection <= upper_bound
+  double largest_excess = 0;      // mm above the upper bound (0: none above)
+  double largest_excess_x = 0;    // where, mm from the nearer clamp
+  double largest_excess_relative = 0;  // that excess over the upper bound there
+  double largest_shortfall = 0;   // mm below the lower bound (0: none below)
+  double largest_shortfall_x = 0;
+};
+CurveBoundsCheck check_curve_bounds(const std::vector<CurveSample>& curve, double from_clamp = 0);
+
 // One converged state of a cyclic transverse load: load V and midspan deflection y.
 struct LoadDeflectionPoint {
   int cycle = 0;          // 1-based cycle of the load protocol
