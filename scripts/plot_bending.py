@@ -4,7 +4,8 @@
 - bending_hysteresis.png: midspan load V against deflection for every cycle (history.csv), with the straight
   lines of eq. 3.1 for EImax and EImin from the start of the first cycle to the peak load (loops.csv);
 - bending_deflection.png: the core's deflection along the strand at each cycle's peak load beside eq. 3.2 for
-  EImax and EImin (deflection_curves.csv);
+  EImax and EImin, and EImin with the wires' shear (deflection_curves.csv), titled with summary.json's check of
+  the first peak's curve against those bounds;
 - bending_wire_forces.png: wire axial force F at the first cycle's peak load and its change dF since V = 0,
   along the half strand, for the wires near the plane of the load and near the plane across it (paper
   Figs. 12-13; wire_profiles.csv);
@@ -90,10 +91,34 @@ def plot_folder(folder):
             if c == 1:
                 ax.plot(z, [float(r["eq32_ei_max_mm"]) for r in pts], "k--", lw=1, label="EImax (eq. 3.2)")
                 ax.plot(z, [float(r["eq32_ei_min_mm"]) for r in pts], "k:", lw=1, label="EImin (eq. 3.2)")
+                if "eq32_ei_min_shear_mm" in pts[0]:
+                    ax.plot(z, [float(r["eq32_ei_min_shear_mm"]) for r in pts], "k-.", lw=0.8,
+                            label="EImin with the wires' shear")
+        check = curve_check_title(folder)
+        if check:
+            ax.set_title(check, fontsize=8)
         written.append(save(fig, ax, "axial position z (mm)", "core deflection at peak V (mm)",
                             os.path.join(folder, "bending_deflection.png")))
     written += plot_profiles(folder)
     return written
+
+
+def curve_check_title(folder):
+    """summary.json's check of the first peak's curve against eq. 3.2's bounds, in one line (empty if absent)."""
+    path = os.path.join(folder, "summary.json")
+    if not os.path.exists(path):
+        return ""
+    checks = json.load(open(path)).get("bending", {}).get("deflection_curves", [])
+    if not checks:
+        return ""
+    first = checks[0]["all_nodes"]
+    text = f"cycle {checks[0]['cycle']}: {first['within']} of {first['nodes']} nodes between eq. 3.2's bounds"
+    if first["largest_excess_mm"] > 0:
+        text += (f"; largest excess {100 * first['largest_excess_relative']:.2g} % "
+                 f"at {first['largest_excess_x_mm']:g} mm from a clamp")
+    if first["largest_shortfall_mm"] > 0:
+        text += f"; below EImax by up to {first['largest_shortfall_mm']:.3g} mm"
+    return text
 
 
 REGIONS = (("vertical", "near the load's plane"), ("horizontal", "near the plane across it"))

@@ -162,6 +162,11 @@ TEST(Resume, LoopsOfClosedCyclesAreWrittenBeforeTheRunEnds) {
   EXPECT_GE(summary["solver_statistics"]["newton_iterations"].get<int>(), 22);
   EXPECT_GT(summary["solver_statistics"]["factorizations"].get<int>(), 0);
   EXPECT_GT(summary["wall_time_s"].get<double>(), 0.0);
+  // ... and the results so far: the closed loop, the check of each peak's curve reached, the energies.
+  EXPECT_EQ(summary["bending"]["loops"].size(), 1u);
+  EXPECT_GE(summary["bending"]["deflection_curves"].size(), 1u);
+  EXPECT_EQ(summary["bending"]["deflection_curves"][0]["cycle"], 1);
+  EXPECT_GT(summary["energy"]["external_work_Nmm"].get<double>(), 0.0);
 }
 
 TEST(Resume, RefusesAFolderWithoutCheckpoint) {

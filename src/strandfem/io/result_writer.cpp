@@ -153,15 +153,32 @@ nlohmann::json solver_statistics(const StaticAnalysis& analysis) {
 }
 }  // namespace
 
-void ResultWriter::record_stop(const StaticAnalysis& analysis, double wall_seconds) {
+nlohmann::json ResultWriter::run_summary(const StaticAnalysis& analysis, double wall_seconds) {
   nlohmann::json summary = model_info_;
-  summary["status"] = "stopped";
-  summary["message"] = "stopped by --stop-after after its last converged increment; --resume continues";
   summary["wall_time_s"] = wall_seconds;
   summary["converged_increments"] = rows_.size();
   summary["linear_solver"] = analysis.linear_solver_name();
   summary["solver_statistics"] = solver_statistics(analysis);
+  // Abaqus' check on its stabilization: the energy it dissipates against the work done on the model.
+  const EnergyBalance& energy = analysis.energies();
+  summary["energy"] = {{"external_work_Nmm", energy.external_work},
+                       {"stabilization_energy_Nmm", energy.stabilization_energy},
+                       {"stabilization_fraction",
+                        energy.external_work > 0 ? energy.stabilization_energy / energy.external_work : 0.0}};
+  summary["contacts"] = ContactWriter::summary(analysis);
+  if (bending_.active()) {
+    summary["bending"] = bending_.finish();
+    summary["bending"]["profiles"] = profiles_.summary();
+    summary["bending"]["clamp_edge_offset_mm"] = case_.output.clamp_edge_offset;
+  }
   summary["configuration"] = case_.resolved;
+  return summary;
+}
+
+void ResultWriter::record_stop(const StaticAnalysis& analysis, double wall_seconds) {
+  nlohmann::json summary = run_summary(analysis, wall_seconds);
+  summary["status"] = "stopped";
+  summary["message"] = "stopped by --stop-after after its last converged increment; --resume continues";
   write_summary(summary);
 }
 
@@ -338,26 +355,9 @@ void ResultWriter::finish(const StaticAnalysis& analysis, const AnalysisStatus& 
                      u.z(), r.x(), r.y(), r.z());
   }
   displacements.commit();
-  nlohmann::json summary = model_info_;
+  nlohmann::json summary = run_summary(analysis, wall_seconds);
   summary["status"] = status.converged ? "converged" : "not_converged";
   if (!status.converged) summary["message"] = status.message;
-  summary["wall_time_s"] = wall_seconds;
-  summary["converged_increments"] = rows_.size();
-  summary["linear_solver"] = analysis.linear_solver_name();
-  summary["solver_statistics"] = solver_statistics(analysis);
-  // Abaqus' check on its stabilization: the energy it dissipates against the work done on the model.
-  const EnergyBalance& energy = analysis.energies();
-  summary["energy"] = {{"external_work_Nmm", energy.external_work},
-                       {"stabilization_energy_Nmm", energy.stabilization_energy},
-                       {"stabilization_fraction",
-                        energy.external_work > 0 ? energy.stabilization_energy / energy.external_work : 0.0}};
-  summary["contacts"] = ContactWriter::summary(analysis);
-  if (bending_.active()) {
-    summary["bending"] = bending_.finish();
-    summary["bending"]["profiles"] = profiles_.summary();
-    summary["bending"]["clamp_edge_offset_mm"] = case_.output.clamp_edge_offset;
-  }
-  summary["configuration"] = case_.resolved;
   write_summary(summary);
 }
 
