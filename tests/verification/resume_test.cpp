@@ -139,6 +139,15 @@ TEST(Resume, AddsCyclesToTheLastStepOnly) {
   const ProgramRun more = run_program("run " + case_path(kCase) + " -q -o " + results.string() + " --resume", "resume_more_cycles");
   ASSERT_EQ(more.exit_code, 0) << more.stderr_text;
   for (const char* file : {"history.csv", "loops.csv", "wires.csv"}) expect_same_rows(full.output / "results" / file, results / file);
+  // The first cycle's check of its peak curve came through the checkpoint, the second's was made after it.
+  auto curve_checks = [](const std::filesystem::path& dir) {
+    return nlohmann::json::parse(std::ifstream(dir / "summary.json"))["bending"]["deflection_curves"];
+  };
+  const nlohmann::json checks = curve_checks(results);
+  ASSERT_EQ(checks.size(), 2u);
+  EXPECT_EQ(checks[0]["cycle"], 1);
+  EXPECT_EQ(checks[1]["cycle"], 2);
+  EXPECT_EQ(checks.dump(), curve_checks(full.output / "results").dump());
   const ProgramRun fewer = run_program("run " + short_case + " -q -o " + results.string() + " --resume", "resume_fewer_cycles");
   EXPECT_EQ(fewer.exit_code, 2);
   EXPECT_NE(fewer.stderr_text.find("steps[1].cycles is 1"), std::string::npos) << fewer.stderr_text;
