@@ -116,6 +116,16 @@ TEST(Hysteresis, ParallelogramLoopAreaStiffnessAndSteadiness) {
   HysteresisLoop larger = loops[1];
   larger.area *= 1.1;
   EXPECT_FALSE(loop_is_steady(loops[0], larger, 0.05));
+  // The changes against the previous cycle: friction's work 7 -> 5 is -2/7 of the larger; the area 18 -> 19.8 is
+  // +1.8/19.8; a peak 0.3 mm further is +0.3 over the larger travel, 3.3 mm.
+  EXPECT_NEAR(cycle_change(loops[0], loops[1]).friction_dissipation, -2.0 / 7.0, 1e-12);
+  EXPECT_NEAR(cycle_change(loops[0], loops[1]).area, 0.0, 1e-12);
+  EXPECT_NEAR(cycle_change(loops[0], larger).area, 1.8 / 19.8, 1e-12);
+  HysteresisLoop further = loops[1];
+  further.peak_deflection += 0.3;
+  EXPECT_NEAR(cycle_change(loops[0], further).peak_deflection, 0.3 / 3.3, 1e-12);
+  EXPECT_TRUE(loop_is_steady(loops[0], further, 0.1));
+  EXPECT_FALSE(loop_is_steady(loops[0], further, 0.09));
   // An incomplete last cycle (no return half) gives no loop.
   history.push_back({3, false, 10, 1});
   EXPECT_EQ(hysteresis_loops(history).size(), 2u);

@@ -4,8 +4,12 @@
 // most of every loop is friction's work.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "program_runner.hpp"
@@ -69,6 +73,40 @@ TEST(FrictionTrends, OrthotropicFrictionShrinksTheLoop) {
   ASSERT_FALSE(isotropic.empty() || orthotropic.empty());
   EXPECT_LT(orthotropic.at("area_Nmm"), 0.95 * isotropic.at("area_Nmm"));
   EXPECT_GT(orthotropic.at("secant_ei_Nm2"), 1.02 * isotropic.at("secant_ei_Nm2"));
+}
+
+// Three cycles of mu 0.2: the first loop also locks in a set, the repeated ones are friction's work and repeat
+// each other (the paper: steady from the second cycle). On this 5-increment segment cycle 3 still differs from
+// cycle 2 by about 6 % in area (it shakes down slowly), so the case asks output.steady_tolerance 0.1: cycle 3
+// is steady by it, cycle 2 is not; at the default 0.02 neither would be.
+TEST(FrictionTrends, RepeatedCyclesAreFrictionsWorkAndSteady) {
+  std::ifstream in(case_path(kCase));
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (const auto& [from, to] : {std::pair<std::string, std::string>{"cycles: 1,", "cycles: 3,"},
+                                 {"output: {vtu: false}", "output: {vtu: false, steady_tolerance: 0.1}"}}) {
+    ASSERT_NE(text.find(from), std::string::npos) << from;
+    text.replace(text.find(from), from.size(), to);
+  }
+  const std::string three_cycles = ::testing::TempDir() + "/friction_trends_three_cycles.yaml";
+  std::ofstream(three_cycles) << text;
+  const auto results = std::filesystem::path(::testing::TempDir()) / "strandfem_friction_three_cycles" / "results";
+  const ProgramRun run = run_program("run " + three_cycles + " -q -o " + results.string(), "friction_three_cycles");
+  ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
+  const auto loops = read_csv(results / "loops.csv");
+  ASSERT_EQ(loops.size(), 3u);
+  EXPECT_LT(loops[1].at("area_Nmm"), 0.5 * loops[0].at("area_Nmm"));
+  for (int c : {1, 2}) {
+    EXPECT_NEAR(loops[c].at("area_Nmm"), loops[c].at("friction_dissipation_Nmm"), 0.05 * loops[c].at("area_Nmm")) << c;
+    expect_between_bounds(loops[c], "cycle " + std::to_string(c + 1));
+  }
+  EXPECT_LT(loops[1].at("area_change"), -0.5);
+  EXPECT_EQ(loops[1].at("steady"), 0.0);
+  EXPECT_LT(std::abs(loops[2].at("area_change")), 0.1);
+  EXPECT_LT(std::abs(loops[2].at("peak_deflection_change")), 0.01);
+  EXPECT_EQ(loops[2].at("steady"), 1.0);
+  const nlohmann::json bending = nlohmann::json::parse(std::ifstream(results / "summary.json"))["bending"];
+  EXPECT_EQ(bending["steady_tolerance"], 0.1);
+  EXPECT_EQ(bending["loops"][2]["steady"], true);
 }
 
 }  // namespace

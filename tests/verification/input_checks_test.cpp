@@ -94,6 +94,15 @@ TEST(InputChecks, ClampEdgeOffsetIsADistanceWithinHalfTheStrand) {
   });
 }
 
+// The steadiness tolerance of the loops is a fraction: 0.02 means 2 %, not 2.
+TEST(InputChecks, SteadyToleranceIsAFractionBelowOne) {
+  expect_exit_2({
+      {"steady_zero", kSeven, {{"steps:", "output: {steady_tolerance: 0}\nsteps:"}}, {"output.steady_tolerance", "positive"}},
+      {"steady_percent", kSeven, {{"steps:", "output: {steady_tolerance: 2}\nsteps:"}}, {"output.steady_tolerance", "below 1"}},
+      {"steady_text", kSeven, {{"steps:", "output: {steady_tolerance: two}\nsteps:"}}, {"output.steady_tolerance"}},
+  });
+}
+
 // Class 3: a key given twice in one mapping (YAML keeps one silently) names both lines.
 TEST(InputChecks, DuplicateKeysNameBothLines) {
   expect_exit_2({

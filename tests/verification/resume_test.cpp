@@ -124,6 +124,27 @@ TEST(Resume, ResumedRunWithContactStabilizationMatches) {
 TEST(Resume, AddsCyclesToTheLastStepOnly) {
   const ProgramRun full = run_case(kCase, "resume_more_full");
   ASSERT_EQ(full.exit_code, 0) << full.stderr_text;
+  {
+    // Each cycle after the first says how it differs from the one before, and whether it is steady by the default
+    // tolerance (FrictionTrends.RepeatedCyclesAreFrictionsWorkAndSteady sets another).
+    const auto loops = read_csv(full.output / "results" / "loops.csv");
+    ASSERT_EQ(loops.size(), 2u);
+    EXPECT_TRUE(std::isnan(loops[0].at("area_change")));
+    // This axial case has no transverse load: its areas are 0 (change 0), its peaks the deflection's round-off.
+    auto change = [&](const char* column) {
+      const double before = loops[0].at(column), now = loops[1].at(column);
+      const double scale = std::max(std::abs(before), std::abs(now));
+      return scale > 0 ? (now - before) / scale : 0.0;
+    };
+    EXPECT_NEAR(loops[1].at("area_change"), change("area_Nmm"), 1e-6);
+    EXPECT_NEAR(loops[1].at("friction_dissipation_change"), change("friction_dissipation_Nmm"), 1e-6);
+    const nlohmann::json bending = nlohmann::json::parse(std::ifstream(full.output / "results" / "summary.json"))["bending"];
+    EXPECT_EQ(bending["steady_tolerance"], 0.02);
+    const bool steady = std::abs(loops[1].at("area_change")) <= 0.02 && std::abs(loops[1].at("peak_deflection_change")) <= 0.02;
+    EXPECT_EQ(loops[1].at("steady"), steady ? 1.0 : 0.0);
+    EXPECT_EQ(bending["loops"][1]["steady"], steady);
+    EXPECT_NEAR(bending["loops"][1]["change"]["area"].get<double>(), loops[1].at("area_change"), 1e-6);
+  }
   std::ifstream in(case_path(kCase));
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const std::string two = "cycles: 2,";

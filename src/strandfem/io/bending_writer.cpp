@@ -79,7 +79,8 @@ nlohmann::json BendingWriter::finish() {
   WholeFile file(directory_ / "loops.csv");
   std::ostream& out = file.stream();
   out << "cycle,area_Nmm,friction_dissipation_Nmm,peak_load_N,peak_deflection_mm,start_deflection_mm,end_deflection_mm,"
-         "secant_stiffness_N_per_mm,secant_ei_Nm2,loading_tangent_N_per_mm,unloading_tangent_N_per_mm,eq31_ei_max_mm,eq31_ei_min_mm,steady\n";
+         "secant_stiffness_N_per_mm,secant_ei_Nm2,loading_tangent_N_per_mm,unloading_tangent_N_per_mm,eq31_ei_max_mm,eq31_ei_min_mm,steady,"
+         "area_change,friction_dissipation_change,peak_deflection_change\n";
   nlohmann::json rows = nlohmann::json::array();
   const double length = case_.axial_length;
   for (std::size_t i = 0; i < loops.size(); ++i) {
@@ -89,15 +90,23 @@ nlohmann::json BendingWriter::finish() {
     const double secant_ei = tension > 0 ? equivalent_bending_stiffness(travel / l.peak_load, tension, length) : 0.0;
     const double y_max = tension > 0 ? tensioned_beam_midspan_deflection(l.peak_load, tension, ei_max_, length) : 0.0;
     const double y_min = tension > 0 ? tensioned_beam_midspan_deflection(l.peak_load, tension, ei_min_, length) : 0.0;
-    const bool steady = i > 0 && loop_is_steady(loops[i - 1], l, 0.02);
-    out << fmt::format("{},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{}\n", l.cycle,
+    const bool steady = i > 0 && loop_is_steady(loops[i - 1], l, case_.output.steady_tolerance);
+    nlohmann::json row = {{"cycle", l.cycle}, {"area_Nmm", l.area}, {"friction_dissipation_Nmm", l.friction_dissipation},
+                          {"peak_load_N", l.peak_load}, {"peak_deflection_mm", l.peak_deflection}, {"secant_ei_Nm2", 1e-6 * secant_ei},
+                          {"eq31_ei_max_mm", y_max}, {"eq31_ei_min_mm", y_min},
+                          {"peak_within_eq31", y_max <= l.peak_deflection && l.peak_deflection <= y_min}, {"steady", steady}};
+    std::string changes = ",,";  // the first cycle has no previous one
+    if (i > 0) {
+      const CycleChange change = cycle_change(loops[i - 1], l);
+      changes = fmt::format("{:.6g},{:.6g},{:.6g}", change.area, change.friction_dissipation, change.peak_deflection);
+      row["change"] = {{"area", change.area}, {"friction_dissipation", change.friction_dissipation},
+                       {"peak_deflection", change.peak_deflection}};
+    }
+    out << fmt::format("{},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{},{}\n", l.cycle,
                        l.area, l.friction_dissipation, l.peak_load, l.peak_deflection, l.start_deflection,
                        l.end_deflection, l.secant_stiffness, 1e-6 * secant_ei, l.loading_tangent, l.unloading_tangent,
-                       y_max, y_min, steady ? 1 : 0);
-    rows.push_back({{"cycle", l.cycle}, {"area_Nmm", l.area}, {"friction_dissipation_Nmm", l.friction_dissipation},
-                    {"peak_load_N", l.peak_load}, {"peak_deflection_mm", l.peak_deflection}, {"secant_ei_Nm2", 1e-6 * secant_ei},
-                    {"eq31_ei_max_mm", y_max}, {"eq31_ei_min_mm", y_min},
-                    {"peak_within_eq31", y_max <= l.peak_deflection && l.peak_deflection <= y_min}, {"steady", steady}});
+                       y_max, y_min, steady ? 1 : 0, changes);
+    rows.push_back(row);
   }
   file.commit();
   // Eq. 3.2's check at each peak: every interior core node, and those at or beyond the clamp-edge offset.
@@ -106,7 +115,9 @@ nlohmann::json BendingWriter::finish() {
     curves.push_back({{"cycle", c.cycle},
                       {"all_nodes", curve_check_json(c.all_nodes)},
                       {"beyond_clamp_edge", curve_check_json(c.beyond_clamp_edge)}});
-  return {{"ei_max_Nm2", 1e-6 * ei_max_}, {"ei_min_Nm2", 1e-6 * ei_min_}, {"loops", rows}, {"deflection_curves", curves}};
+  return {{"ei_max_Nm2", 1e-6 * ei_max_},  {"ei_min_Nm2", 1e-6 * ei_min_},
+          {"loops", rows},                {"steady_tolerance", case_.output.steady_tolerance},
+          {"deflection_curves", curves}};
 }
 
 void BendingWriter::save_state(ArchiveWriter& out) const {

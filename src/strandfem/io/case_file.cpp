@@ -336,7 +336,14 @@ class CaseParser {
   }
 
   void parse_output(const YAML::Node& node) {
-    reader_.check_keys(node, "output", {"every", "vtu", "monitor", "contacts", "contacts_every", "wires", "checkpoint", "clamp_edge_offset"});
+    reader_.check_keys(node, "output", {"every", "vtu", "monitor", "contacts", "contacts_every", "wires", "checkpoint", "clamp_edge_offset",
+                                          "steady_tolerance"});
+    if (node["steady_tolerance"]) {
+      const double tolerance = reader_.positive(node["steady_tolerance"], "output.steady_tolerance", "fraction");
+      if (tolerance >= 1)
+        reader_.fail(node["steady_tolerance"], "output.steady_tolerance", "expected a fraction below 1 (0.02 is 2 %)");
+      out_.output.steady_tolerance = tolerance;
+    }
     if (node["clamp_edge_offset"]) {
       const double offset = reader_.non_negative(node["clamp_edge_offset"], "output.clamp_edge_offset", "mm");
       if (!out_.strand) reader_.fail(node["clamp_edge_offset"], "output.clamp_edge_offset", "only strands have clamps");

@@ -22,6 +22,8 @@ struct OutputOptions {
   // Bending status maps start this far (mm) inside the strand from each restrained end, where the paper
   // (section 4.1) places the clamp edge: 22 mm for the Cardinal conductor.
   double clamp_edge_offset = 0;
+  // A cycle's loop is steady when its area and peak deflection are within this fraction of the previous cycle's.
+  double steady_tolerance = 0.02;
 };
 
 // A parsed, validated case: the model plus what the outputs need to know about it.

@@ -110,12 +110,21 @@ std::vector<HysteresisLoop> hysteresis_loops(const std::vector<LoadDeflectionPoi
   return loops;
 }
 
-bool loop_is_steady(const HysteresisLoop& previous, const HysteresisLoop& current, double tolerance) {
-  const double area_scale = std::max(previous.area, current.area);
+CycleChange cycle_change(const HysteresisLoop& previous, const HysteresisLoop& current) {
+  auto relative = [](double before, double now, double scale) { return scale > 0 ? (now - before) / scale : 0.0; };
   const double deflection_scale =
       std::max(std::abs(current.peak_deflection - current.start_deflection), std::abs(previous.peak_deflection - previous.start_deflection));
-  return std::abs(current.area - previous.area) <= tolerance * area_scale &&
-         std::abs(current.peak_deflection - previous.peak_deflection) <= tolerance * deflection_scale;
+  CycleChange change;
+  change.area = relative(previous.area, current.area, std::max(std::abs(previous.area), std::abs(current.area)));
+  change.friction_dissipation = relative(previous.friction_dissipation, current.friction_dissipation,
+                                         std::max(std::abs(previous.friction_dissipation), std::abs(current.friction_dissipation)));
+  change.peak_deflection = relative(previous.peak_deflection, current.peak_deflection, deflection_scale);
+  return change;
+}
+
+bool loop_is_steady(const HysteresisLoop& previous, const HysteresisLoop& current, double tolerance) {
+  const CycleChange change = cycle_change(previous, current);
+  return std::abs(change.area) <= tolerance && std::abs(change.peak_deflection) <= tolerance;
 }
 
 }  // namespace strandfem

@@ -81,8 +81,16 @@ struct HysteresisLoop {
 // increment, e.g. the end of the tension ramp, is the cycle's start).
 std::vector<HysteresisLoop> hysteresis_loops(const std::vector<LoadDeflectionPoint>& history);
 
-// Whether cycle n repeats cycle n - 1: loop areas and peak deflections within the relative tolerance (of
-// the larger area, and of the deflection range of the cycle).
+// How cycle n differs from cycle n - 1, relative: the area and friction's work against the larger of the two, the
+// peak deflection against the larger deflection range (peak - start) of the two cycles. Signed: n - (n - 1).
+struct CycleChange {
+  double area = 0;
+  double friction_dissipation = 0;
+  double peak_deflection = 0;
+};
+CycleChange cycle_change(const HysteresisLoop& previous, const HysteresisLoop& current);
+
+// Whether cycle n repeats cycle n - 1: its area and peak deflection changes (cycle_change) within the tolerance.
 bool loop_is_steady(const HysteresisLoop& previous, const HysteresisLoop& current, double tolerance);
 
 }  // namespace strandfem
