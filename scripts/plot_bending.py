@@ -2,7 +2,8 @@
 """Plots a bending-under-tension results folder (a case with a cyclic transverse-load step, paper sections 3.2-5):
 
 - bending_hysteresis.png: midspan load V against deflection for every cycle (history.csv), with the straight
-  lines of eq. 3.1 for EImax and EImin from the start of the first cycle to the peak load (loops.csv);
+  lines of eq. 3.1 for EImax and EImin from the start of the first cycle to the peak load (loops.csv); each
+  later cycle's label gives its loop's change against the cycle before and whether it is steady;
 - bending_deflection.png: the core's deflection along the strand at each cycle's peak load beside eq. 3.2 for
   EImax and EImin, and EImin with the wires' shear (deflection_curves.csv), titled with summary.json's check of
   the first peak's curve against those bounds;
@@ -74,6 +75,11 @@ def plot_folder(folder):
             # The loop's area is friction's work plus the set the cycle locks in (docs/theory.md, "Loops").
             label += (f": loop {energy(loop_of[c]['area_Nmm'])}, friction "
                       f"{energy(loop_of[c]['friction_dissipation_Nmm'])}")
+        if c in loop_of and loop_of[c].get("area_change"):
+            # Against the cycle before (loops.csv); steady by the case's output.steady_tolerance.
+            label += f", {100 * float(loop_of[c]['area_change']):+.1f} % on cycle {c - 1}"
+            if loop_of[c].get("steady") == "1":
+                label += " (steady)"
         ax.plot([float(r["midspan_deflection_mm"]) - y0 for r in pts], [float(r["transverse_load_N"]) for r in pts],
                 "-o", ms=2.5, lw=1, label=label)
     if loops:
