@@ -33,13 +33,16 @@ def rows(folder, name):
     return list(csv.DictReader(open(path))) if os.path.exists(path) else []
 
 
-def save(fig, ax, xlabel, ylabel, path):
+def save(fig, ax, xlabel, ylabel, path, legend_below=False):
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
+    if legend_below:  # long labels (one per cycle) would hide the loops' lower ends
+        ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(0.0, -0.12))
+    else:
+        ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(path, dpi=130)
+    fig.savefig(path, dpi=130, bbox_inches="tight")
     plt.close(fig)
     return path
 
@@ -61,7 +64,7 @@ def plot_folder(folder):
         print(f"{folder}: no cyclic step, nothing to plot")
         return []
     written = []
-    fig, ax = plt.subplots(figsize=(6, 4.5))
+    fig, ax = plt.subplots(figsize=(6, 5.5))
     first = history.index(cyclic[0])
     start = history[first - 1] if first > 0 else cyclic[0]
     y0 = float(start["midspan_deflection_mm"])
@@ -87,7 +90,7 @@ def plot_folder(folder):
         for key, style, label in (("eq31_ei_max_mm", "k--", "EImax (eq. 3.1)"), ("eq31_ei_min_mm", "k:", "EImin (eq. 3.1)")):
             ax.plot([0, float(loops[0][key])], [0, peak], style, lw=1, label=label)
     written.append(save(fig, ax, "midspan deflection (mm), from the start of the first cycle", "transverse load V (N)",
-                        os.path.join(folder, "bending_hysteresis.png")))
+                        os.path.join(folder, "bending_hysteresis.png"), legend_below=True))
     if curves:
         fig, ax = plt.subplots(figsize=(6, 4.5))
         for c in sorted({int(r["cycle"]) for r in curves}):
