@@ -308,6 +308,42 @@ TEST(ContactTangent, ElasticSlipLaw) {
   EXPECT_LT(tangent_error(p, f, axis, ContactStatus::kSlip), 1e-6);
 }
 
+// contact.friction_direction: slave_wire. Direction 1 of an orthotropic point is the slave wire's tangent projected
+// on the contact plane, whatever the strand axis: at a crossing at 90 degrees the strand axis along the master
+// would swap the two directions. The direction moves with the slave wire, and the tangent carries its derivative.
+TEST(ContactTangent, OrthotropicDirectionAlongTheSlaveWire) {
+  PairFixture f(M_PI / 2, 1.8);
+  ContactPoint p = make_point(ContactKind::kPoint);
+  p.allowed_slip = 0.05;
+  p.mu2 = 5.0 * p.mu1;
+  p.direction_along_slave_wire = true;
+  const Vec3 master_axis = Vec3::UnitY();  // along wire b: the strand-axis reading would take direction 1 there
+  set_stick(p, f, 0.2, 0.1);
+  const ContactResponse r = response_at(p, f, false, master_axis);
+  ASSERT_EQ(r.status, ContactStatus::kSlip);
+  const V3<double> t = centerline_tangent(f.a.x, r.xi);
+  Vec3 d1 = Vec3(t[0], t[1], t[2]);
+  d1 = (d1 - d1.dot(r.normal) * r.normal).normalized();
+  const Vec3 d2 = d1.cross(r.normal);
+  EXPECT_NEAR(r.q1, r.friction.dot(d1), 1e-12 * r.normal_force);
+  EXPECT_NEAR(r.q2, r.friction.dot(d2), 1e-12 * r.normal_force);
+  EXPECT_NEAR(std::hypot(r.q1 / p.mu1, r.q2 / p.mu2), r.normal_force, 1e-9 * r.normal_force);
+  EXPECT_LT(tangent_error(p, f, master_axis, ContactStatus::kSlip), 1e-6) << "slip";
+  set_stick(p, f, 0.005, 0.002);
+  EXPECT_LT(tangent_error(p, f, master_axis, ContactStatus::kStick), 1e-6) << "stick";
+  // The same point in the strand-axis reading has its directions swapped (direction 1 along the master).
+  p.direction_along_slave_wire = false;
+  set_stick(p, f, 0.2, 0.1);
+  const ContactResponse along_axis = response_at(p, f, false, master_axis);
+  EXPECT_GT(std::abs(along_axis.q1 - r.q1), 0.1 * r.normal_force * p.mu1);
+  // An isotropic point ignores the setting (the strand axis is used, and the force is the same either way).
+  p.mu2 = p.mu1;
+  const ContactResponse isotropic_axis = response_at(p, f, false, master_axis);
+  p.direction_along_slave_wire = true;
+  const ContactResponse isotropic_wire = response_at(p, f, false, master_axis);
+  EXPECT_NEAR((isotropic_axis.friction - isotropic_wire.friction).norm(), 0.0, 1e-12);
+}
+
 TEST(ContactTangent, LineContactStickSlipOrthotropic) {
   // Slave a nearly parallel to master b (5 degrees), side by side.
   PairFixture f(0.09, 0.0);
@@ -442,7 +478,7 @@ TEST(ContactForceLaw, OrthotropicElasticSlipReachesTheConeAtTheSameSlipInEveryDi
   law.allowed_slip = 0.05;
   const double pressure = 100;
   const V3<double> normal{1.0, 0.0, 0.0}, along{0.0, 0.0, 1.0}, across{0.0, 1.0, 0.0};  // axis z: direction 1 along z
-  const Vec3 axis = Vec3::UnitZ();
+  const V3<double> axis = along;
   for (const auto& [direction, mu] : {std::make_pair(along, law.mu1), std::make_pair(across, law.mu2)}) {
     const auto half = friction_force(law, normal, scale(0.5 * law.allowed_slip, direction), pressure, axis);
     EXPECT_FALSE(half.slipping);

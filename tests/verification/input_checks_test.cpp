@@ -142,6 +142,8 @@ TEST(InputChecks, ContradictoryAndNonPhysicalValuesAreRefused) {
       {"pair_sets_nothing", kSeven,
        {{"steps:", "contact: {friction_pairs: [{materials: [steel, steel], contacts: radial}]}\nsteps:"}},
        {"contact.friction_pairs[0]", "orthotropy_ratio"}},
+      {"friction_direction_unknown", kSeven, {{"steps:", "contact: {friction_direction: inner_wire}\nsteps:"}},
+       {"contact.friction_direction", "strand_axis", "slave_wire"}},
       {"huge_modulus", kSeven, {{"E: 188000", "E: 1e300"}}, {"materials.steel.E", "1e15"}},
       {"infinite_force", kBeam, {{"9869.604401089358", ".inf"}}, {"steps[0].forces[0].moment[2]", "finite"}},
       {"stress_measure_nominal", "cases/paper/seven_wire_plastic_fixed.yaml",

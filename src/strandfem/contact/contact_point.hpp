@@ -65,7 +65,10 @@ struct ContactPoint {
   double radius_a = 0, radius_b = 0;
   double gap_offset = 0;           // subtracted from the gap: the reference overlap (<= 0) or 0
   PenaltyStiffness stiffness;
-  double mu1 = 0, mu2 = 0;         // along the strand axis projected on the contact plane, and across
+  double mu1 = 0, mu2 = 0;         // along friction direction 1 and across
+  // Direction 1 of an orthotropic point (mu2 != mu1) is the slave wire's tangent at the point projected on the
+  // contact plane (contact.friction_direction: slave_wire) instead of the strand axis: it turns with the wire.
+  bool direction_along_slave_wire = false;
   double allowed_slip = 0;         // elastic-slip law: slip (mm) at which the stick force reaches the cone; 0: eq. 2.6
   // contact.stabilization: stiffness (units of the normal penalty) of the tangential spring on the motion since
   // the last converged increment; 0: none.
@@ -206,7 +209,10 @@ ContactForces<T> contact_forces(const ContactPoint& point, const ElementPose<T>&
     out.tangential_gap = sub(separation, scale(dot(n, separation), n));
     const FrictionLaw law{point.mu1, point.mu2, point.stiffness.tangential, point.allowed_slip, point.friction_mode,
                           point.slip_direction};
-    const FrictionForce<T> f = friction_force(law, n, out.tangential_gap, out.normal_force, axis);
+    const V3<T> reference = point.direction_along_slave_wire && point.mu2 != point.mu1
+                                ? centerline_tangent(a.x, xi)
+                                : V3<T>{T(axis[0]), T(axis[1]), T(axis[2])};
+    const FrictionForce<T> f = friction_force(law, n, out.tangential_gap, out.normal_force, reference);
     out.friction = f.force;
     out.trial_friction = f.trial;
     out.q1 = f.q1;

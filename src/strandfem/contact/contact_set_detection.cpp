@@ -158,6 +158,7 @@ void ContactSet::set_point_properties(const Mesh& mesh, ContactPoint& p, const V
   const ContactInterface interface = contact_interface(mesh.wires[p.wire_a].layer, mesh.wires[p.wire_b].layer);
   p.mu1 = settings_.friction_at(sa.material().name, sb.material().name, interface, reference_position.dot(settings_.strand_axis));
   p.mu2 = p.mu1 * settings_.orthotropy_at(sa.material().name, sb.material().name, interface);
+  p.direction_along_slave_wire = settings_.friction_direction == FrictionDirection::kSlaveWire;
   p.stiffness = penalty_stiffness(settings_, p.kind == ContactKind::kLine, modulus, diameter, element_size, p.mu1);
   p.allowed_slip = settings_.tangential_penalty == TangentialPenalty::kElasticSlip ? settings_.elastic_slip * element_size : 0.0;
   p.sliding_stabilization = sliding_stabilization(p);

@@ -76,7 +76,9 @@ void ContactSet::restore_state(ArchiveReader& in, const Mesh& mesh, const std::v
   for (std::uint64_t i = 0; i < point_count; ++i) {
     points.push_back(load_point(in));
     ContactPoint& p = points.back();
-    p.sliding_stabilization = sliding_stabilization(p);  // from the settings, as set_point_properties does
+    // From the settings, as set_point_properties does.
+    p.sliding_stabilization = sliding_stabilization(p);
+    p.direction_along_slave_wire = settings_.friction_direction == FrictionDirection::kSlaveWire;
     const int wires = static_cast<int>(mesh.wires.size());
     if (p.wire_a < 0 || p.wire_a >= wires || p.wire_b < 0 || p.wire_b >= wires)
       throw ArchiveError("checkpoint does not match this model: a contact point names a wire it does not have");

@@ -52,6 +52,9 @@ bool same_pair(const std::string& a, const std::string& b, const std::string& ma
 }  // namespace
 
 const char* to_string(ContactInterface interface) { return interface == ContactInterface::kRadial ? "radial" : "lateral"; }
+const char* to_string(FrictionDirection direction) {
+  return direction == FrictionDirection::kSlaveWire ? "slave_wire" : "strand_axis";
+}
 
 ContactInterface contact_interface(int layer_a, int layer_b) {
   return layer_a != layer_b && std::min(layer_a, layer_b) >= 1 ? ContactInterface::kRadial : ContactInterface::kLateral;

@@ -48,6 +48,10 @@ enum class InitialOverlap {
   kKeep     // keep it: the overlap is pressed out in the first increment
 };
 
+// What friction direction 1 of an orthotropic contact follows (section 5.3).
+enum class FrictionDirection { kStrandAxis, kSlaveWire };
+const char* to_string(FrictionDirection direction);
+
 // How the tangential (stick) penalty is set.
 enum class TangentialPenalty {
   kPaper,       // eq. 2.6: K_t = fKt mu E d^2 xi_t / h, fixed
@@ -71,8 +75,12 @@ struct ContactSettings {
   double friction = 0.0;
   std::vector<MaterialPairFriction> pair_friction;
   std::vector<FrictionZone> zone_friction;
-  double orthotropy_ratio = 1.0;  // mu2 / mu1 (mu1 along the strand axis projected on the contact plane)
+  double orthotropy_ratio = 1.0;  // mu2 / mu1 (mu1 along friction direction 1)
   Vec3 strand_axis = Vec3::UnitZ();
+  // Friction direction 1 of orthotropic points, projected on the contact plane: the strand axis (section 5.3's
+  // text), or the slave wire's tangent (the x axis of the paper's CONTA176 elements, mapped onto the inner wire
+  // at crossings).
+  FrictionDirection friction_direction = FrictionDirection::kStrandAxis;
   // Search: element boxes are inflated by the wire radius plus this margin (mm); the search reruns when a
   // node has moved more than half the margin since the last search.
   double search_margin = 0.5;

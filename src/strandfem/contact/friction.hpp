@@ -15,7 +15,7 @@ enum class FrictionMode { kFree, kHeldStick, kHeldSlip };  // see ContactPoint::
 
 // Parameters and working state of the friction law at one contact point.
 struct FrictionLaw {
-  double mu1 = 0, mu2 = 0;          // along the strand axis projected on the contact plane, and across
+  double mu1 = 0, mu2 = 0;          // along direction 1 (the reference direction projected on the contact plane), and across
   double tangential_stiffness = 0;  // k_t: N/mm (point) or N/mm^2 (line), when allowed_slip is 0
   // > 0: the elastic-slip law, k_t = mu_i P / allowed_slip along direction i with the current P: a point sticks
   // while its elastic slip |g_T| stays below allowed_slip, whatever the pressure and the direction.
@@ -41,14 +41,13 @@ struct FrictionForce {
 };
 
 // Friction for unit normal n, tangential gap g_T (on the contact plane) and normal force P. Direction 1 is
-// the strand axis projected on the contact plane, direction 2 = direction 1 x n; the cone is
-// (Q1/mu1)^2 + (Q2/mu2)^2 <= P^2.
+// `reference` (the strand axis, or a wire's tangent, which then moves with the wires) projected on the contact
+// plane, direction 2 = direction 1 x n; the cone is (Q1/mu1)^2 + (Q2/mu2)^2 <= P^2.
 template <class T>
 FrictionForce<T> friction_force(const FrictionLaw& law, const V3<T>& n, const V3<T>& tangential_gap, const T& P,
-                                const Vec3& axis) {
+                                const V3<T>& reference) {
   FrictionForce<T> f;
-  const V3<T> strand_axis{T(axis[0]), T(axis[1]), T(axis[2])};
-  V3<T> d1 = sub(strand_axis, scale(dot(n, strand_axis), n));
+  V3<T> d1 = sub(reference, scale(dot(n, reference), n));
   d1 = scale(1.0 / sqrt(dot(d1, d1)), d1);
   const V3<T> d2 = cross(d1, n);
   if (law.allowed_slip > 0) {

@@ -25,6 +25,7 @@ std::pair<std::string, std::string> material_pair(const YamlReader& reader, cons
 ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Node& node,
                                        const std::map<std::string, Material>& materials, bool strand) {
   reader.check_keys(node, "contact", {"enabled", "friction", "friction_pairs", "friction_zones", "orthotropy_ratio",
+                                       "friction_direction",
                                        "normal_factor", "tangential_factor", "normal_multiplier", "tangential_multiplier",
                                        "search_margin", "line_contact_angle", "line_points", "initial_overlap", "touch_tolerance", "pattern_margin", "axis",
                                        "tangential_penalty", "elastic_slip", "normal_smoothing",
@@ -111,6 +112,9 @@ ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Nod
     c.pattern_margin = reader.non_negative(node["pattern_margin"], "contact.pattern_margin", "fraction of r_a + r_b");
     if (c.pattern_margin >= 1) reader.fail(node["pattern_margin"], "contact.pattern_margin", "expected a fraction of the radius sum below 1");
   }
+  if (node["friction_direction"])
+    c.friction_direction = reader.choice(node["friction_direction"], "contact.friction_direction", {"strand_axis", "slave_wire"}) == "slave_wire"
+                               ? FrictionDirection::kSlaveWire : FrictionDirection::kStrandAxis;
   if (node["initial_overlap"])
     c.initial_overlap = reader.choice(node["initial_overlap"], "contact.initial_overlap", {"offset", "keep"}) == "offset"
                             ? InitialOverlap::kOffset : InitialOverlap::kKeep;
@@ -125,6 +129,7 @@ ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Nod
 
 nlohmann::json resolved_contact_settings(const ContactSettings& k) {
   nlohmann::json resolved = {{"enabled", k.enabled}, {"friction", k.friction}, {"orthotropy_ratio", k.orthotropy_ratio},
+                             {"friction_direction", to_string(k.friction_direction)},
                              {"normal_factor", k.normal_factor}, {"tangential_factor", k.tangential_factor},
                              {"normal_multiplier", k.normal_multiplier}, {"tangential_multiplier", k.tangential_multiplier},
                              {"tangential_penalty", k.tangential_penalty == TangentialPenalty::kPaper ? "paper" : "elastic_slip"},
