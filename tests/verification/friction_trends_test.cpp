@@ -11,6 +11,8 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "program_runner.hpp"
 
@@ -29,6 +31,19 @@ std::filesystem::path sweep(const std::string& key, const std::string& values, c
   const ProgramRun run = run_program("sweep " + case_path(kCase) + " --key " + key + " --values " + values + " -q -o " + folder.string(), tag);
   EXPECT_EQ(run.exit_code, 0) << run.stderr_text;
   return folder;
+}
+
+// kCase with each `from` text replaced by its `to`, written to the test's temporary folder as `name`.yaml.
+std::string case_variant(const std::vector<std::pair<std::string, std::string>>& replacements, const std::string& name) {
+  std::ifstream in(case_path(kCase));
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (const auto& [from, to] : replacements) {
+    EXPECT_NE(text.find(from), std::string::npos) << from;
+    if (text.find(from) != std::string::npos) text.replace(text.find(from), from.size(), to);
+  }
+  const std::string path = ::testing::TempDir() + "/" + name + ".yaml";
+  std::ofstream(path) << text;
+  return path;
 }
 
 void expect_between_bounds(const std::map<std::string, double>& loop, const std::string& name) {
@@ -80,13 +95,8 @@ TEST(FrictionTrends, OrthotropicFrictionShrinksTheLoop) {
 // work 59.02 against 54.47, secant EI 111.8 against 111.5 N m^2: the reading changes the loop by 8 %, and both
 // still bend between eq. 3.1's bounds. The summary says which reading ran.
 TEST(FrictionTrends, FrictionDirectionAlongTheSlaveWireIsAnotherReading) {
-  std::ifstream in(case_path(kCase));
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::string from = "elastic_slip: 0.0005}";
-  ASSERT_NE(text.find(from), std::string::npos);
-  text.replace(text.find(from), from.size(), "elastic_slip: 0.0005, orthotropy_ratio: 5}");
-  const std::string orthotropic_case = ::testing::TempDir() + "/friction_trends_orthotropic.yaml";
-  std::ofstream(orthotropic_case) << text;
+  const std::string orthotropic_case =
+      case_variant({{"elastic_slip: 0.0005}", "elastic_slip: 0.0005, orthotropy_ratio: 5}"}}, "friction_trends_orthotropic");
   const auto folder = std::filesystem::path(::testing::TempDir()) / "strandfem_trend_direction";
   const ProgramRun run = run_program("sweep " + orthotropic_case + " --key contact.friction_direction --values strand_axis,slave_wire -q -o " +
                                          folder.string(),
@@ -110,15 +120,9 @@ TEST(FrictionTrends, FrictionDirectionAlongTheSlaveWireIsAnotherReading) {
 // cycle 2 by about 6 % in area (it shakes down slowly), so the case asks output.steady_tolerance 0.1: cycle 3
 // is steady by it, cycle 2 is not; at the default 0.02 neither would be.
 TEST(FrictionTrends, RepeatedCyclesAreFrictionsWorkAndSteady) {
-  std::ifstream in(case_path(kCase));
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  for (const auto& [from, to] : {std::pair<std::string, std::string>{"cycles: 1,", "cycles: 3,"},
-                                 {"output: {vtu: false}", "output: {vtu: false, steady_tolerance: 0.1}"}}) {
-    ASSERT_NE(text.find(from), std::string::npos) << from;
-    text.replace(text.find(from), from.size(), to);
-  }
-  const std::string three_cycles = ::testing::TempDir() + "/friction_trends_three_cycles.yaml";
-  std::ofstream(three_cycles) << text;
+  const std::string three_cycles = case_variant({{"cycles: 1,", "cycles: 3,"},
+                                                 {"output: {vtu: false}", "output: {vtu: false, steady_tolerance: 0.1}"}},
+                                                "friction_trends_three_cycles");
   const auto results = std::filesystem::path(::testing::TempDir()) / "strandfem_friction_three_cycles" / "results";
   const ProgramRun run = run_program("run " + three_cycles + " -q -o " + results.string(), "friction_three_cycles");
   ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
