@@ -109,30 +109,54 @@ int run_case_file(const std::string& case_path, const std::string& output_dir, i
 // strandfem sweep: a family of cases, each into its own results folder under output_dir, then sweep.csv (one row per
 // variant) and sweep.png (their curves on one plot, scripts/plot_sweep.py). With a key, one case with that key set
 // to each value (the variants' case files are written into output_dir/cases); without, the case files as given.
+// --set KEY=VALUE settings apply to every variant (their case files then go to output_dir/cases in both forms).
 // Every variant is read and checked before any is run. Returns 0 when all converged, else the first failure's code.
 int run_sweep(const std::vector<std::string>& cases, const std::string& key, const std::vector<std::string>& values,
-              const std::string& output_dir, int threads, bool quiet) {
+              const std::vector<std::string>& fixed_settings, const std::string& output_dir, int threads, bool quiet) {
   namespace fs = std::filesystem;
   struct Variant {
     std::string name, value, case_file;
     int exit_code = -1;
   };
   std::vector<Variant> variants;
+  // --set KEY=VALUE: the same setting in every variant, so that the variants' case files are written out too.
+  std::vector<std::pair<std::string, std::string>> settings;
+  for (const std::string& setting : fixed_settings) {
+    const auto equals = setting.find('=');
+    if (equals == std::string::npos || equals == 0 || equals + 1 == setting.size())
+      throw strandfem::CaseError("sweep --set: expected KEY=VALUE (e.g. contact.friction_direction=slave_wire), got '" +
+                                 setting + "'");
+    const std::string setting_key = setting.substr(0, equals);
+    if (setting_key == key) throw strandfem::CaseError("sweep --set " + setting_key + ": the key is already varied by --key");
+    for (const auto& earlier : settings)
+      if (earlier.first == setting_key) throw strandfem::CaseError("sweep --set " + setting_key + ": given twice");
+    settings.emplace_back(setting_key, setting.substr(equals + 1));
+  }
+  const auto read_text = [](const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw strandfem::CaseError(path + ": cannot read the case file");
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  };
+  const auto write_variant = [&](Variant& v, const std::string& source, std::string text, std::string what) {
+    for (const auto& [setting_key, setting_value] : settings) {
+      text = strandfem::set_case_key(text, setting_key, setting_value);
+      what += (what.empty() ? " with " : ", ") + setting_key + " = " + setting_value;
+    }
+    fs::create_directories(fs::path(output_dir) / "cases");
+    v.case_file = (fs::path(output_dir) / "cases" / (v.name + ".yaml")).string();
+    std::ofstream out(v.case_file);
+    out << "# " << source << what << " (strandfem sweep)\n" << text;
+    if (!out) throw strandfem::OutputError("cannot write " + v.case_file);
+  };
   if (!key.empty()) {
     if (cases.size() != 1) throw strandfem::CaseError("sweep --key varies one case, got " + std::to_string(cases.size()));
     if (values.empty()) throw strandfem::CaseError("sweep --key " + key + ": expected --values v1,v2,...");
-    std::ifstream in(cases[0]);
-    if (!in) throw strandfem::CaseError(cases[0] + ": cannot read the case file");
-    std::stringstream text;
-    text << in.rdbuf();
-    fs::create_directories(fs::path(output_dir) / "cases");
+    const std::string text = read_text(cases[0]);
     for (const std::string& value : values) {
       Variant v{strandfem::variant_folder_name(key, value), value, ""};
-      v.case_file = (fs::path(output_dir) / "cases" / (v.name + ".yaml")).string();
-      std::ofstream out(v.case_file);
-      out << "# " << cases[0] << " with " << key << " = " << value << " (strandfem sweep)\n"
-          << strandfem::set_case_key(text.str(), key, value);
-      if (!out) throw strandfem::OutputError("cannot write " + v.case_file);
+      write_variant(v, cases[0], strandfem::set_case_key(text, key, value), " with " + key + " = " + value);
       variants.push_back(v);
     }
   } else {
@@ -141,6 +165,7 @@ int run_sweep(const std::vector<std::string>& cases, const std::string& key, con
       Variant v{fs::path(c).stem().string(), "", c};
       for (const Variant& other : variants)
         if (other.name == v.name) v.name += "_" + std::to_string(variants.size() + 1);
+      if (!settings.empty()) write_variant(v, c, read_text(c), "");
       variants.push_back(v);
     }
   }
@@ -215,13 +240,14 @@ int main(int argc, char** argv) {
                   "Write the tangent of this session's K-th factorization to OUTPUT/tangent_K.bin (for bench/tangent_bench)")
       ->check(CLI::Range(1, 1000000000));
   run->add_flag("--plots", plots, "Draw the results' figures (PNG, into the results folder; needs python3-matplotlib)");
-  std::vector<std::string> sweep_cases, sweep_values;
+  std::vector<std::string> sweep_cases, sweep_values, sweep_settings;
   std::string sweep_key;
   auto* sweep = app.add_subcommand("sweep", "Run a family of cases (case files, or one case with one key over values) and plot their curves together");
   sweep->add_option("cases", sweep_cases, "Case files (YAML); with --key, exactly one")->required();
   sweep->add_option("-o,--output", output_dir, "Folder of the sweep: a results folder per case, sweep.csv, sweep.png");
   sweep->add_option("--key", sweep_key, "Key to vary, dot-separated (e.g. contact.friction, strand.layers.1.lay_angle)");
   sweep->add_option("--values", sweep_values, "Values of the key, comma-separated (e.g. 0.5,0.7,0.9)")->delimiter(',');
+  sweep->add_option("--set", sweep_settings, "KEY=VALUE set in every variant (repeatable), e.g. contact.friction_direction=slave_wire");
   sweep->add_option("-t,--threads", threads, "OpenMP threads for element evaluation (0: default)")->check(CLI::NonNegativeNumber);
   sweep->add_flag("-q,--quiet", quiet, "No progress lines");
   auto* info = app.add_subcommand("info", "Print model sizes and analytic references as JSON, without solving");
@@ -243,7 +269,7 @@ int main(int argc, char** argv) {
       }
       return 0;
     }
-    if (sweep->parsed()) return run_sweep(sweep_cases, sweep_key, sweep_values, output_dir, threads, quiet);
+    if (sweep->parsed()) return run_sweep(sweep_cases, sweep_key, sweep_values, sweep_settings, output_dir, threads, quiet);
     return run_case_file(case_path, output_dir, threads, quiet, verbose, plots, resume, stop_after, dump_tangent);
   } catch (const strandfem::CaseError& e) {
     std::cerr << "error: " << e.what() << "\n";

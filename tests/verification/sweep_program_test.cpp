@@ -1,5 +1,6 @@
 // Requirement (issue 9): `strandfem sweep` runs a family of cases, one key over values, each into its own results
-// folder, and puts their curves on one plot; a variant that is bad input stops the sweep before anything runs.
+// folder, and puts their curves on one plot; `--set` fixes other keys in every variant; a variant that is bad input
+// stops the sweep before anything runs.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -53,6 +54,44 @@ TEST(Sweep, BadKeysAndBadValuesStopItBeforeAnythingRuns) {
   run = run_program("sweep " + case_path(kCase) + " --values 1,2 -q -o " + folder.string(), "sweep_bad");
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.stderr_text.find("--values needs --key"), std::string::npos) << run.stderr_text;
+}
+
+TEST(Sweep, SetFixesOtherKeysInEveryVariant) {
+  const auto folder = std::filesystem::path(::testing::TempDir()) / "strandfem_sweep_set" / "sweep";
+  const ProgramRun run = run_program("sweep " + case_path(kCase) +
+                                         " --key contact.friction --values 0.4 --set contact.orthotropy_ratio=3"
+                                         " --set contact.friction_direction=slave_wire -q -o " + folder.string(),
+                                     "sweep_set");
+  ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
+  std::ifstream variant(folder / "cases" / "contact.friction=0.4.yaml");
+  std::stringstream text;
+  text << variant.rdbuf();
+  EXPECT_NE(text.str().find("friction: 0.4"), std::string::npos) << text.str();
+  EXPECT_NE(text.str().find("orthotropy_ratio: 3"), std::string::npos) << text.str();
+  // What ran, read back from the run's own record of its configuration.
+  std::ifstream summary(folder / "contact.friction=0.4" / "summary.json");
+  std::stringstream record;
+  record << summary.rdbuf();
+  EXPECT_NE(record.str().find("\"friction_direction\": \"slave_wire\""), std::string::npos) << record.str().substr(0, 2000);
+}
+
+TEST(Sweep, BadSettingsStopItBeforeAnythingRuns) {
+  const auto folder = std::filesystem::path(::testing::TempDir()) / "strandfem_sweep_bad_set" / "sweep";
+  // A list of cases with a setting: the setting reaches every case, and a wrong value is refused by name.
+  ProgramRun run = run_program("sweep " + case_path(kCase) + " --set contact.friction=-1 -q -o " + folder.string(),
+                               "sweep_bad_set");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.stderr_text.find("contact.friction"), std::string::npos) << run.stderr_text;
+  EXPECT_FALSE(std::filesystem::exists(folder / "bending_cycles_sticking" / "history.csv"));
+  for (const std::string& bad : {"contact.friction", "=0.3", "contact.friction="}) {
+    run = run_program("sweep " + case_path(kCase) + " --set " + bad + " -q -o " + folder.string(), "sweep_bad_set");
+    EXPECT_EQ(run.exit_code, 2) << bad;
+    EXPECT_NE(run.stderr_text.find("expected KEY=VALUE"), std::string::npos) << run.stderr_text;
+  }
+  run = run_program("sweep " + case_path(kCase) + " --key contact.friction --values 0.3 --set contact.friction=0.5 -q -o " +
+                        folder.string(), "sweep_bad_set");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.stderr_text.find("already varied by --key"), std::string::npos) << run.stderr_text;
 }
 
 }  // namespace
