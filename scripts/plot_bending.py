@@ -3,7 +3,8 @@
 
 - bending_hysteresis.png: midspan load V against deflection for every cycle (history.csv), with the straight
   lines of eq. 3.1 for EImax and EImin from the start of the first cycle to the peak load (loops.csv); each
-  later cycle's label gives its loop's change against the cycle before and whether it is steady;
+  later cycle's label gives its loop's change against the cycle before and whether it is steady, and the area of
+  the loop from the previous peak (the previous return and this loading: the paper's Fig. 9b presentation);
 - bending_deflection.png: the core's deflection along the strand at each cycle's peak load beside eq. 3.2 for
   EImax and EImin, and EImin with the wires' shear (deflection_curves.csv), titled with summary.json's check of
   the first peak's curve against those bounds;
@@ -83,6 +84,9 @@ def plot_folder(folder):
             label += f", {100 * float(loop_of[c]['area_change']):+.1f} % on cycle {c - 1}"
             if loop_of[c].get("steady") == "1":
                 label += " (steady)"
+        if c in loop_of and loop_of[c].get("return_loop_area_Nmm"):
+            # Cycle c - 1's return and this loading, peak to peak: the loop as the paper draws it (Fig. 9b).
+            label += f"; from peak {c - 1}: {energy(loop_of[c]['return_loop_area_Nmm'])}"
         ax.plot([float(r["midspan_deflection_mm"]) - y0 for r in pts], [float(r["transverse_load_N"]) for r in pts],
                 "-o", ms=2.5, lw=1, label=label)
     if loops:

@@ -5,6 +5,10 @@
   eq. 3.1's EImax and EImin lines up to the peak load (from the first variant's summary.json that has a loop);
   beside it, where the variants wrote deflection_curves.csv, the core's deflection at the first peak over the
   15 % of the span next to the clamp at z = 0 (the paper's 0-150 mm of its 1 m strands), with eq. 3.2's curves;
+- where a bending variant ran two cycles or more, a panel as the paper draws its Cardinal loops (Fig. 9b, "the first
+  transversal load application" removed): cycle 1's return half and cycle 2's loading half, shifted so that V = 0
+  between them lies at zero deflection, labelled with that loop's area (loops.csv, return_loop_area_Nmm), with
+  eq. 3.1's lines;
 - axial cases: axial force against axial strain.
 
 One curve per row of sweep.csv (its variant name in the legend); a variant without results is left out.
@@ -64,6 +68,45 @@ def draw_deflection_curves(ax, folder, variants):
     return drawn
 
 
+def return_loop_points(rows):
+    """Cycle 1's return half (from its peak) and cycle 2's loading half, x from the V = 0 point between them; None
+    without a second cycle."""
+    cycle = [int(r.get("cycle", 0)) for r in rows]
+    if 2 not in cycle:
+        return None
+    returning = [r.get("returning") == "1" for r in rows]
+    peak = max(i for i in range(len(rows)) if cycle[i] == 1 and not returning[i])
+    valley = max(i for i in range(len(rows)) if cycle[i] == 1)
+    second_peak = max(i for i in range(len(rows)) if cycle[i] == 2 and not returning[i])
+    part = rows[peak:second_peak + 1]
+    x0 = float(rows[valley]["midspan_deflection_mm"])
+    return ([float(r["midspan_deflection_mm"]) - x0 for r in part], [float(r["transverse_load_N"]) for r in part])
+
+
+def draw_return_loops(ax, folder, variants, curves):
+    """The paper's presentation of each variant with a second cycle; False when none has one."""
+    drawn = False
+    for name, rows in curves:
+        points = return_loop_points(rows)
+        if points is None:
+            continue
+        label = name
+        loops_path = os.path.join(folder, next(v["results"] for v in variants if v["variant"] == name), "loops.csv")
+        loops = list(csv.DictReader(open(loops_path))) if os.path.exists(loops_path) else []
+        if len(loops) > 1 and loops[1].get("return_loop_area_Nmm"):
+            label += f": {float(loops[1]['return_loop_area_Nmm']) / 1000:.3g} N m"
+        ax.plot(points[0], points[1], marker=".", markersize=3, linewidth=1, label=label)
+        drawn = True
+    if drawn:
+        draw_eq31_bounds(ax, folder, variants)
+        ax.set_xlabel("midspan deflection from V = 0 after cycle 1 (mm)")
+        ax.set_ylabel("transverse load V (N)")
+        ax.set_title("cycle 1's return and cycle 2's loading (paper, Fig. 9b)", fontsize=8)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7)
+    return drawn
+
+
 def main(folder):
     variants = list(csv.DictReader(open(os.path.join(folder, "sweep.csv"))))
     curves = []
@@ -79,11 +122,15 @@ def main(folder):
         return 1
     bending = any(abs(float(r["transverse_load_N"])) > 0 for _, rows in curves for r in rows)
     has_curves = bending and any(os.path.exists(os.path.join(folder, v["results"], "deflection_curves.csv")) for v in variants)
+    has_return = bending and any(return_loop_points(rows) is not None for _, rows in curves)
+    panels = 1 + has_curves + has_return
+    fig, axes = plt.subplots(1, panels, figsize=(5.5 * panels if panels > 1 else 6.4, 4.6), squeeze=False)
+    axes = list(axes[0])
     if has_curves:
-        fig, (ax_curve, ax) = plt.subplots(1, 2, figsize=(11, 4.6))
-        draw_deflection_curves(ax_curve, folder, variants)
-    else:
-        fig, ax = plt.subplots(figsize=(6.4, 4.6))
+        draw_deflection_curves(axes.pop(0), folder, variants)
+    ax = axes.pop(0)
+    if has_return:
+        draw_return_loops(axes.pop(0), folder, variants, curves)
     for name, rows in curves:
         if bending:
             # From the end of the tension ramp on: the state before the first transverse increment starts the loop.

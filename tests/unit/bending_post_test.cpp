@@ -126,9 +126,39 @@ TEST(Hysteresis, ParallelogramLoopAreaStiffnessAndSteadiness) {
   EXPECT_NEAR(cycle_change(loops[0], further).peak_deflection, 0.3 / 3.3, 1e-12);
   EXPECT_TRUE(loop_is_steady(loops[0], further, 0.1));
   EXPECT_FALSE(loop_is_steady(loops[0], further, 0.09));
+  // The return loop (cycle 1's return half and cycle 2's loading half, peak to peak) of two identical cycles is
+  // the loop itself; friction's work from peak 1 (4 N mm) to peak 2 (10 N mm).
+  EXPECT_FALSE(loops[0].has_return_loop);
+  ASSERT_TRUE(loops[1].has_return_loop);
+  EXPECT_NEAR(loops[1].return_loop_area, 18.0, 1e-12);
+  EXPECT_NEAR(loops[1].return_loop_friction_dissipation, 6.0, 1e-12);
   // An incomplete last cycle (no return half) gives no loop.
   history.push_back({3, false, 10, 1});
   EXPECT_EQ(hysteresis_loops(history).size(), 2u);
+}
+
+TEST(Hysteresis, ReturnLoopLeavesOutTheFirstLoadingsSet) {
+  // Cycle 1 locks in a set of 1 mm: out (0,0) -> (1,10) -> (4,12), back -> (3,2) -> (1,0); its loop, polygon
+  // (0,0),(1,10),(4,12),(3,2),(1,0), has area 29. Cycle 2 repeats the parallelogram of area 18 from (1,0). The
+  // return loop of cycle 2, (4,12),(3,2),(1,0),(2,10),(4,12), is that parallelogram: the 11 N mm of the set are
+  // in cycle 1's area only.
+  std::vector<LoadDeflectionPoint> history = {{0, false, 0, 0, 500, 0}};
+  const std::vector<std::tuple<int, bool, double, double>> points = {
+      {1, false, 10, 1}, {1, false, 12, 4}, {1, true, 2, 3}, {1, true, 0, 1},
+      {2, false, 10, 2}, {2, false, 12, 4}, {2, true, 2, 3}, {2, true, 0, 1}};
+  double dissipated = 0;
+  for (const auto& [cycle, returning, load, deflection] : points)
+    history.push_back({cycle, returning, load, deflection, 500, dissipated += 1});
+  const auto loops = hysteresis_loops(history);
+  ASSERT_EQ(loops.size(), 2u);
+  EXPECT_NEAR(loops[0].area, 29.0, 1e-12);
+  EXPECT_NEAR(loops[1].area, 18.0, 1e-12);
+  ASSERT_TRUE(loops[1].has_return_loop);
+  EXPECT_NEAR(loops[1].return_loop_area, 18.0, 1e-12);
+  EXPECT_NEAR(loops[1].return_loop_friction_dissipation, 4.0, 1e-12);  // from point 2 (peak 1) to point 6 (peak 2)
+  // A cycle that does not start where the previous one ended (another step between them) has none.
+  history.insert(history.begin() + 5, LoadDeflectionPoint{0, false, 0, 1, 500, 4});
+  EXPECT_FALSE(hysteresis_loops(history)[1].has_return_loop);
 }
 
 }  // namespace

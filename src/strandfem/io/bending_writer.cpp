@@ -80,7 +80,7 @@ nlohmann::json BendingWriter::finish() {
   std::ostream& out = file.stream();
   out << "cycle,area_Nmm,friction_dissipation_Nmm,peak_load_N,peak_deflection_mm,start_deflection_mm,end_deflection_mm,"
          "secant_stiffness_N_per_mm,secant_ei_Nm2,loading_tangent_N_per_mm,unloading_tangent_N_per_mm,eq31_ei_max_mm,eq31_ei_min_mm,steady,"
-         "area_change,friction_dissipation_change,peak_deflection_change\n";
+         "area_change,friction_dissipation_change,peak_deflection_change,return_loop_area_Nmm,return_loop_friction_dissipation_Nmm\n";
   nlohmann::json rows = nlohmann::json::array();
   const double length = case_.axial_length;
   for (std::size_t i = 0; i < loops.size(); ++i) {
@@ -102,10 +102,15 @@ nlohmann::json BendingWriter::finish() {
       row["change"] = {{"area", change.area}, {"friction_dissipation", change.friction_dissipation},
                        {"peak_deflection", change.peak_deflection}};
     }
-    out << fmt::format("{},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{},{}\n", l.cycle,
+    std::string return_loop = ",";  // none for the first cycle
+    if (l.has_return_loop) {
+      return_loop = fmt::format("{:.8g},{:.8g}", l.return_loop_area, l.return_loop_friction_dissipation);
+      row["return_loop"] = {{"area_Nmm", l.return_loop_area}, {"friction_dissipation_Nmm", l.return_loop_friction_dissipation}};
+    }
+    out << fmt::format("{},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{},{},{}\n", l.cycle,
                        l.area, l.friction_dissipation, l.peak_load, l.peak_deflection, l.start_deflection,
                        l.end_deflection, l.secant_stiffness, 1e-6 * secant_ei, l.loading_tangent, l.unloading_tangent,
-                       y_max, y_min, steady ? 1 : 0, changes);
+                       y_max, y_min, steady ? 1 : 0, changes, return_loop);
     rows.push_back(row);
   }
   file.commit();

@@ -62,8 +62,26 @@ CurveBoundsCheck check_curve_bounds(const std::vector<CurveSample>& curve, doubl
   return check;
 }
 
+namespace {
+
+// Area of the polygon through the points, closed by a straight line from the last to the first.
+double polygon_area(const std::vector<const LoadDeflectionPoint*>& polygon) {
+  double twice_area = 0;
+  for (std::size_t j = 0; j < polygon.size(); ++j) {
+    const LoadDeflectionPoint& a = *polygon[j];
+    const LoadDeflectionPoint& b = *polygon[(j + 1) % polygon.size()];
+    twice_area += a.deflection * b.load - b.deflection * a.load;
+  }
+  return 0.5 * std::abs(twice_area);
+}
+
+}  // namespace
+
 std::vector<HysteresisLoop> hysteresis_loops(const std::vector<LoadDeflectionPoint>& history) {
   std::vector<HysteresisLoop> loops;
+  // The previous complete cycle's return half, its peak first, and the index of the point after its end.
+  std::vector<const LoadDeflectionPoint*> previous_return;
+  std::size_t previous_end = 0;
   for (std::size_t i = 0; i < history.size();) {
     const int cycle = history[i].cycle;
     if (cycle == 0) {
@@ -88,13 +106,17 @@ std::vector<HysteresisLoop> hysteresis_loops(const std::vector<LoadDeflectionPoi
       loop.peak_tension = polygon[peak]->tension;
       loop.start_deflection = start.deflection;
       loop.end_deflection = polygon.back()->deflection;
-      double twice_area = 0;
-      for (std::size_t j = 0; j < polygon.size(); ++j) {
-        const LoadDeflectionPoint& a = *polygon[j];
-        const LoadDeflectionPoint& b = *polygon[(j + 1) % polygon.size()];
-        twice_area += a.deflection * b.load - b.deflection * a.load;
+      loop.area = polygon_area(polygon);
+      if (!previous_return.empty() && previous_end == i && loops.back().cycle + 1 == cycle) {
+        // polygon[0] (this cycle's start) is the previous return half's last point.
+        std::vector<const LoadDeflectionPoint*> return_loop = previous_return;
+        return_loop.insert(return_loop.end(), polygon.begin() + 1, polygon.begin() + static_cast<std::ptrdiff_t>(peak) + 1);
+        loop.has_return_loop = true;
+        loop.return_loop_area = polygon_area(return_loop);
+        loop.return_loop_friction_dissipation = polygon[peak]->friction_dissipation - previous_return.front()->friction_dissipation;
       }
-      loop.area = 0.5 * std::abs(twice_area);
+      previous_return.assign(polygon.begin() + static_cast<std::ptrdiff_t>(peak), polygon.end());
+      previous_end = end;
       loop.friction_dissipation = polygon.back()->friction_dissipation - start.friction_dissipation;
       auto slope = [](const LoadDeflectionPoint& a, const LoadDeflectionPoint& b) {
         const double dy = b.deflection - a.deflection;

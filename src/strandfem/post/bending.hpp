@@ -75,10 +75,17 @@ struct HysteresisLoop {
   double secant_stiffness = 0;    // (V_peak - V_start) / (y_peak - y_start), N/mm
   double loading_tangent = 0;     // dV/dy over the first increment out, N/mm
   double unloading_tangent = 0;   // dV/dy over the first increment back, N/mm
+  // The loop as the paper draws its Cardinal loops (Fig. 9b: "the first transversal load application" removed): the
+  // previous cycle's return half and this cycle's loading half, from peak to peak (polygon closed by a straight
+  // line between the two peaks). It leaves out the set that a first loading locks in, which `area` carries.
+  // Only for a cycle that starts where the previous one ended; has_return_loop is false otherwise (cycle 1).
+  bool has_return_loop = false;
+  double return_loop_area = 0;                  // N mm
+  double return_loop_friction_dissipation = 0;  // N mm: work of friction from the previous peak to this one
 };
 
 // Loops of every complete cycle in the history (points in load order; the point before a cycle's first
-// increment, e.g. the end of the tension ramp, is the cycle's start).
+// increment, e.g. the end of the tension ramp, is the cycle's start), each with its return loop from cycle 2 on.
 std::vector<HysteresisLoop> hysteresis_loops(const std::vector<LoadDeflectionPoint>& history);
 
 // How cycle n differs from cycle n - 1, relative: the area and friction's work against the larger of the two, the
