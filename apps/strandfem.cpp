@@ -1,6 +1,7 @@
 // strandfem: command-line front end (run a case, or print its model sizes and analytic references).
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <cstdio>
 #include <filesystem>
@@ -52,6 +53,18 @@ int resolve_threads(int asked, const std::string& source) {
 
 // --plots: the figures of a results folder, drawn by the plotting scripts of the source tree (Debian's /usr/bin/python3 with
 // matplotlib). A missing or failing plotter is a warning: the results themselves are complete.
+// ", 1/4 of the nominal increment after 2 cut-backs" for an increment smaller than the step's nominal one.
+std::string increment_size_note(const strandfem::IncrementReport& r) {
+  if (r.relative_size > 1 - 1e-9) return "";
+  const double inverse = 1 / r.relative_size;
+  char size[32];
+  if (std::abs(inverse - std::round(inverse)) < 1e-6) std::snprintf(size, sizeof size, "1/%.0f", inverse);
+  else std::snprintf(size, sizeof size, "%.3g", r.relative_size);
+  std::string note = std::string(", ") + size + " of the nominal increment";
+  if (r.cutbacks > 0) note += " after " + std::to_string(r.cutbacks) + (r.cutbacks == 1 ? " cut-back" : " cut-backs");
+  return note;
+}
+
 void draw_plots(const std::string& output_dir) {
   const std::string command = std::string("/usr/bin/python3 '") + STRANDFEM_SCRIPTS_DIR + "/plot_bending.py' '" +
                               output_dir + "' > /dev/null";
@@ -83,8 +96,8 @@ int run_case_file(const std::string& case_path, const std::string& output_dir, i
   options.on_increment = [&](const strandfem::IncrementReport& r) {
     if (!quiet)
       std::cerr << "step " << r.origin.step + 1 << "/" << step_count << " '" << r.step_name << "' increment " << r.increment
-                << " (fraction " << r.step_fraction << "): " << r.iterations << " iterations, residual " << r.residual_norm
-                << "\n";
+                << " (fraction " << r.step_fraction << increment_size_note(r) << "): " << r.iterations
+                << " iterations, residual " << r.residual_norm << "\n";
   };
   if (verbose)
     options.on_progress = [&](const strandfem::IncrementReport& r) {

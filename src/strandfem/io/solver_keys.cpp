@@ -8,13 +8,14 @@ constexpr int kMaxThreadsAsked = std::numeric_limits<int>::max();  // the progra
 }  // namespace
 
 void parse_solver_options(const YamlReader& reader, const YAML::Node& node, SolverOptions& o) {
-  reader.check_keys(node, "solver", {"force_tolerance", "moment_tolerance", "displacement_tolerance", "max_iterations",
+  reader.check_keys(node, "solver", {"force_tolerance", "moment_tolerance", "displacement_tolerance", "load_tolerance", "max_iterations",
                                      "max_cutbacks", "line_search_cuts", "linear_solver", "threads",
                                      "krylov_iterations", "refinement_iterations", "krylov_tolerance", "newton_forcing", "extrapolate",
                                      "stabilization", "stabilization_ramp_off"});
   if (node["force_tolerance"]) o.force_tolerance = reader.positive(node["force_tolerance"], "solver.force_tolerance", "-");
   if (node["moment_tolerance"]) o.moment_tolerance = reader.positive(node["moment_tolerance"], "solver.moment_tolerance", "-");
   if (node["displacement_tolerance"]) o.displacement_tolerance = reader.positive(node["displacement_tolerance"], "solver.displacement_tolerance", "-");
+  if (node["load_tolerance"]) o.load_tolerance = reader.positive(node["load_tolerance"], "solver.load_tolerance", "-");
   if (node["max_iterations"]) o.max_iterations = reader.integer(node["max_iterations"], "solver.max_iterations", 1, 1000);
   if (node["max_cutbacks"]) o.max_cutbacks = reader.integer(node["max_cutbacks"], "solver.max_cutbacks", 0, 30);
   if (node["line_search_cuts"]) o.line_search_cuts = reader.integer(node["line_search_cuts"], "solver.line_search_cuts", 0, 20);
@@ -39,6 +40,7 @@ nlohmann::json resolved_solver_options(const SolverOptions& o) {
   return {{"force_tolerance", o.force_tolerance},
           {"moment_tolerance", o.moment_tolerance},
           {"displacement_tolerance", o.displacement_tolerance},
+          {"load_tolerance", o.load_tolerance},
           {"max_iterations", o.max_iterations},
           {"max_cutbacks", o.max_cutbacks},
           {"line_search_cuts", o.line_search_cuts},

@@ -9,7 +9,8 @@ namespace {
 // 3: the statistics add the residual and commit times.
 // 4: the statistics add the corrections cut by the step control (limited_corrections). Only this version is read:
 //    the statistics of the earlier ones have another layout.
-constexpr int kStateVersion = 4;
+// 5: adds the load norms the step's convergence test measures against.
+constexpr int kStateVersion = 5;
 
 void save_nodes(ArchiveWriter& out, const std::vector<NodeState>& nodes) {
   out.value(static_cast<std::uint64_t>(nodes.size()));
@@ -42,6 +43,7 @@ void StaticAnalysis::save_state(ArchiveWriter& out) const {
   out.value(p.extrapolation_failed);
   out.map(p.totals);
   out.map(p.previous_change);
+  out.value(convergence_.step_reference());
   save_nodes(out, committed_state_);
   save_nodes(out, previous_committed_state_.empty() ? committed_state_ : previous_committed_state_);
   out.map(committed_motion_);
@@ -71,6 +73,7 @@ void StaticAnalysis::restore_state(ArchiveReader& in) {
   in.value(p.extrapolation_failed);
   in.map(p.totals);
   in.map(p.previous_change);
+  const auto step_reference = in.value<LoadReference>();
   load_nodes(in, committed_state_);
   previous_committed_state_ = committed_state_;
   load_nodes(in, previous_committed_state_);
@@ -83,6 +86,7 @@ void StaticAnalysis::restore_state(ArchiveReader& in) {
   for (Interaction* interaction : model_state_.interactions()) interaction->restore_state(in, model_.mesh, committed_state_);
   in.section("end");
   progress_ = p;
+  convergence_.begin_step(step_reference);
   state_ = committed_state_;
   applied_motion_ = committed_motion_;
   build_pattern();  // the interactions' element pairs of the checkpoint (not a rebuild the run would count)

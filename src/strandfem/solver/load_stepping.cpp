@@ -1,5 +1,6 @@
 // Load stepping of a static analysis: the protocol's ramps, increment sizes, cut-backs and regrowth, commits.
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 
 #include "strandfem/core/scoped_timer.hpp"
@@ -9,6 +10,29 @@ namespace strandfem {
 namespace {
 constexpr int kEasyIncrementsBeforeRegrowth = 3;
 }  // namespace
+
+std::string StaticAnalysis::stop_message(const std::string& step_name, int ramp, int increment, double converged_fraction,
+                                         double target, double nominal, const IncrementReport& last) const {
+  const SolverOptions& opt = model_.options;
+  char text[1024];
+  std::snprintf(text, sizeof text,
+                "step %d '%s', increment %d: Newton did not converge from load fraction %.6g to %.6g of the step "
+                "(last relative residual %.3g against the tolerance %.3g after %d corrections).\n",
+                ramp + 1, step_name.c_str(), increment, converged_fraction, target, last.residual_norm,
+                std::min(opt.force_tolerance, opt.moment_tolerance), last.corrections);
+  std::string message = text;
+  std::snprintf(text, sizeof text,
+                "  tried: the plain predictor where the extrapolated one failed, the contact step control%s, and "
+                "halving the increment %d times, down to %.3g of the nominal size (%.3g of the step).\n",
+                opt.line_search_cuts > 0 ? (", line search (" + std::to_string(opt.line_search_cuts) + " halvings)").c_str() : "",
+                opt.max_cutbacks, std::ldexp(1.0, -opt.max_cutbacks), nominal * std::ldexp(1.0, -opt.max_cutbacks));
+  message += text;
+  message +=
+      "  check: a load or motion beyond what the strand can carry at this point (a wire yielding through, or sliding "
+      "without end); wires that overlap in the reference geometry (`strandfem info` gives each layer's lateral_clearance_mm and radial_overlap_mm); too few "
+      "increments for this step (raise its `increments`).";
+  return message;
+}
 
 double cut_increment_motion_floor2(double last_motion2, double last_size, double size, double nominal) {
   if (!(last_size > 0) || size >= nominal * (1.0 - 1e-9)) return 0.0;
@@ -38,6 +62,7 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
     }
     if (!p.in_step) {
       p.in_step = true;
+      convergence_.begin_step(convergence_.load_norms(dofs_, committed_forces_, committed_external_));
       p.fraction = 0;
       p.size = p.largest_size = nominal;
       p.easy_at_cap = p.converged_increments = 0;
@@ -70,6 +95,8 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
       report.origin = step.origin;
       report.increment = p.converged_increments + 1;
       report.step_fraction = target;
+      report.cutbacks = cutbacks;
+      report.relative_size = (target - p.fraction) / nominal;
       // Extrapolate within a step or across steps that load the same way (not across a reversal), and not on
       // the retry of a failed increment: a poor predictor must not cost the whole cut-back sequence. Once a plain
       // retry has converged where the extrapolated predictor failed, the step goes on without extrapolating: past
@@ -111,6 +138,7 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
           for (Interaction* interaction : model_state_.interactions()) pattern_changed |= interaction->commit(model_.mesh, state_);
         }
         if (pattern_changed) rebuild_pattern();  // element pairs entered or left the pattern
+        convergence_.accept(convergence_.load_norms(dofs_, internal_forces_, external_));
         add_increment_work();
         previous_committed_state_ = committed_state_;
         committed_state_ = state_;
@@ -154,10 +182,7 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
         if (++cutbacks > model_.options.max_cutbacks || 0.5 * p.size < smallest * (1.0 - 1e-9)) {
           AnalysisStatus status;
           status.converged = false;
-          status.message = "step '" + step.name + "' (" + std::to_string(p.ramp + 1) + ") did not converge at load fraction " +
-                           std::to_string(target) + " after " + std::to_string(model_.options.max_cutbacks) +
-                           " increment cut-backs or at the smallest increment, 1/2^" + std::to_string(model_.options.max_cutbacks) +
-                           " of the nominal one (last relative residual " + std::to_string(report.residual_norm) + ")";
+          status.message = stop_message(step.name, p.ramp, p.converged_increments + 1, p.fraction, target, nominal, report);
           return status;
         }
         p.largest_size = std::min(p.largest_size, 0.5 * p.size);

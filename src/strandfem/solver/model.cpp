@@ -12,6 +12,7 @@ void SolverOptions::validate() const {
   positive(force_tolerance, "force_tolerance");
   positive(moment_tolerance, "moment_tolerance");
   positive(displacement_tolerance, "displacement_tolerance");
+  positive(load_tolerance, "load_tolerance");
   if (max_iterations < 1) throw std::invalid_argument("solver.max_iterations must be >= 1");
   if (line_search_cuts < 0 || line_search_cuts > 20) throw std::invalid_argument("solver.line_search_cuts must be in 0..20");
   if (krylov_iterations < 0 || krylov_iterations > 200) throw std::invalid_argument("solver.krylov_iterations must be in 0..200");

@@ -16,6 +16,8 @@ struct SolverOptions {
   double force_tolerance = 0.005;         // ||force residual|| / reference force (paper: 0.5 %)
   double moment_tolerance = 0.005;        // ||moment residual|| / reference moment
   double displacement_tolerance = 0.005;  // ||last correction|| / ||increment displacement||
+  // Every applied load is met to this fraction of the largest value it takes in its step (ConvergenceTest).
+  double load_tolerance = 0.001;
   int max_iterations = 25;                // Newton iterations per increment before a cut-back
   int max_cutbacks = 8;                   // successive halvings of an increment before giving up
   int line_search_cuts = 0;               // halvings of a Newton correction that raises the residual (not an attempt's first)

@@ -26,13 +26,15 @@ constexpr int kDivergenceCheckAfter = 8;
 // the machine epsilon. Measured at zero load: 9e-16 EA (7-wire strand), 1.6e-13 EA (the same with contact, whose
 // penalties are far stiffer than EA / h); a real unbalance of 1.5e-8 EA is a strain of 1.5e-8 (docs/theory.md).
 constexpr double kRoundoffFraction = 1.5e-8;
+// Smallest force reference, as a fraction of EA: keeps the relative residual finite in a load-free state.
+constexpr double kForceFloorFraction = 1e-12;
 // Loosest linear solve of the inexact Newton (SolverOptions::newton_forcing): a correction accurate to 10 % still
 // measures itself well enough for the displacement test.
 constexpr double kMaxForcing = 0.1;
 
 }  // namespace
 
-StaticAnalysis::StaticAnalysis(Model& model) : model_(model) {
+StaticAnalysis::StaticAnalysis(Model& model) : model_(model), convergence_(model.options, 1.0, 0.0, 0.0) {
   model_.options.validate();
   if (model_.options.threads > 0) omp_set_num_threads(model_.options.threads);
   if (model_.elements.empty()) model_.build_elements();
@@ -50,9 +52,8 @@ StaticAnalysis::StaticAnalysis(Model& model) : model_(model) {
     stiffest = std::max(stiffest, e.section().elastic_stiffness()[0]);
     total_length += e.reference_length();
   }
-  force_floor_ = 1e-12 * stiffest;
-  roundoff_force_ = kRoundoffFraction * stiffest;
   length_scale_ = model_.elements.empty() ? 1.0 : total_length / model_.elements.size();
+  convergence_ = ConvergenceTest(model_.options, length_scale_, kForceFloorFraction * stiffest, kRoundoffFraction * stiffest);
   Eigen::AlignedBox3d box;
   for (const NodeState& n : state_) box.extend(n.position);
   model_extent2_ = state_.empty() ? 0.0 : std::max(box.diagonal().squaredNorm(), length_scale_ * length_scale_);
@@ -182,11 +183,15 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
   const SolverOptions& opt = model_.options;
   const std::size_t node_count = state_.size();
   external_.assign(6 * node_count, 0.0);
-  // Imposed motions: move the driven DOFs to their targets before iterating.
+  // Applied loads, and imposed motions: the driven DOFs move to their targets before iterating.
+  std::vector<AppliedLoad> loads;
   for (const auto& [key, ramp] : ramps) {
     const double target = ramp.first + step_fraction * (ramp.second - ramp.first);
     if (key.kind == NodalAction::kForce) {
       external_[6 * key.node + key.component] += target;
+      const int eq = dofs_.equation[key.node][key.component];
+      const double largest = std::max(std::abs(ramp.first), std::abs(ramp.second));
+      if (eq >= 0 && largest > 0) loads.push_back({eq, largest, key.component >= 3});
       continue;
     }
     const double delta = target - applied_motion_[key];
@@ -195,51 +200,20 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
     if (key.component < 3) s.position[key.component] += delta;
     else s.rotation = (quaternion_from_rotation_vector(delta * Vec3::Unit(key.component - 3)) * s.rotation).normalized();
   }
+  convergence_.set_applied_loads(std::move(loads));
   update_slaves();
   for (Interaction* interaction : model_state_.interactions()) interaction->begin_increment(loading_continues);
   const int n = dofs_.equation_count;
   std::vector<double> rhs(n);
   double increment_displacement2 = 0;
   last_correction2_ = 0;
-  struct Residual {
-    double relative = 0;
-    bool forces_ok = false;
-    bool within_roundoff = false;  // the force test passes against the round-off scale of the internal forces
-    double reference = 0;          // F_ref: norm of the applied loads and reactions
-  };
   // Residual at the current state: rhs = -residual on free DOFs, the relative norm and the force test.
   auto evaluate_residual = [&]() {
     {
       const ScopedTimer timer(statistics_.residual_seconds);
       assembler_->assemble(model_, model_state_, state_, internal_forces_, nullptr, damping());
     }
-    double free_force2 = 0, free_moment2 = 0, ref_force2 = 0, ref_moment2 = 0;
-    for (std::size_t node = 0; node < node_count; ++node) {
-      if (dofs_.tie_of[node] >= 0) continue;
-      for (int c = 0; c < 6; ++c) {
-        const double f_int = internal_forces_[6 * node + c], f_ext = external_[6 * node + c];
-        const int eq = dofs_.equation[node][c];
-        // Reference load: applied loads plus reactions at constrained DOFs.
-        const double reference = eq >= 0 ? f_ext : f_int;
-        (c < 3 ? ref_force2 : ref_moment2) += reference * reference;
-        if (eq < 0) continue;
-        const double residual = f_int - f_ext;
-        rhs[eq] = -residual;
-        (c < 3 ? free_force2 : free_moment2) += residual * residual;
-      }
-    }
-    // Each reference borrows from the other through the mean element length, so that a case loaded
-    // only by moments (or only by forces) still has a meaningful scale for both residuals.
-    const double force_ref = std::max({std::sqrt(ref_force2), std::sqrt(ref_moment2) / length_scale_, force_floor_});
-    const double moment_ref = std::max(std::sqrt(ref_moment2), force_ref * length_scale_);
-    Residual r;
-    r.reference = force_ref;
-    r.relative = std::max(std::sqrt(free_force2) / force_ref, std::sqrt(free_moment2) / moment_ref);
-    r.forces_ok = std::sqrt(free_force2) <= opt.force_tolerance * force_ref &&
-                  std::sqrt(free_moment2) <= opt.moment_tolerance * moment_ref;
-    r.within_roundoff = std::sqrt(free_force2) <= opt.force_tolerance * std::max(force_ref, roundoff_force_) &&
-                        std::sqrt(free_moment2) <= opt.moment_tolerance * std::max(moment_ref, roundoff_force_ * length_scale_);
-    return r;
+    return convergence_.measure(dofs_, internal_forces_, external_, rhs);
   };
   // state_ = start + alpha * correction (spins for rotations); returns the squared correction norm.
   std::vector<NodeState> start;
@@ -276,7 +250,7 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
     for (Interaction* interaction : model_state_.interactions()) changes += interaction->changes_at_convergence();
     return changes;
   };
-  Residual current = evaluate_residual();
+  ResidualCheck current = evaluate_residual();
   // A step with nothing to do starts where the last one converged (or from the stress-free reference state), for
   // the same loads: Newton could only chase round-off, and its displacement test (correction against the
   // increment's motion, both nil) could never pass. Accepted at once when its residual is round-off; the
@@ -309,7 +283,7 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
   // Newton iterations count from the last contact change (release or friction switch); the number of such
   // rounds per increment is capped separately.
   int since_change = 0, rounds = 0;
-  double previous_reference = 0;  // F_ref of the iterate before the current one
+  double previous_reference = 0;  // load norm of the iterate before the current one
   double round_start = current.relative;  // residual at the last contact change (or the predictor)
   for (int iteration = 0;; ++iteration, ++since_change) {
     report.residual_history.push_back(current.relative);
@@ -336,7 +310,8 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
     // axial force at a relative residual of 5e-4 (measured), so they must agree within the same margin.
     const double margin = kForceOnlyMargin * std::min(opt.force_tolerance, opt.moment_tolerance);
     const bool force_margin = report.corrections >= kForceOnlyAfter && current.relative <= margin &&
-                              std::abs(current.reference - previous_reference) <= margin * current.reference;
+                              std::abs(current.state.force - previous_reference) <=
+                                  margin * std::max(current.state.force, convergence_.step_reference().force);
     if (current.forces_ok && (displacement_ok || force_margin)) {
       report.force_only = !displacement_ok;
       // Converged for the interactions' current states (contact: active set, held friction); they may
@@ -374,7 +349,7 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
     for (Interaction* interaction : model_state_.interactions()) interaction->begin_correction();
     double alpha = 1;
     const double full_correction2 = last_correction2_ = apply_correction(alpha);
-    Residual trial = evaluate_residual();
+    ResidualCheck trial = evaluate_residual();
     // Step control: a correction that presses contacts its tangent did not know deep into the penalty stops where
     // they have just closed. S32 case 4 (cycle 3, 0.85 of the return) stopped where an outer wire floated on
     // crossings at the edge of the smoothing band (no force, no stiffness): the full first correction of a
@@ -393,7 +368,7 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
       last_correction2_ = apply_correction(alpha);
       trial = evaluate_residual();
     }
-    previous_reference = current.reference;
+    previous_reference = current.state.force;
     current = trial;
     // The divergence check (top of the loop) measures an attempt from where its searched corrections start: after the
     // full first correction. Against the predictor's residual, S32 case 4's cycle-2 return failed an increment whose

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "strandfem/solver/assembler.hpp"
+#include "strandfem/solver/convergence_test.hpp"
 #include "strandfem/solver/krylov.hpp"
 #include "strandfem/solver/model.hpp"
 #include "strandfem/solver/stabilization.hpp"
@@ -27,6 +28,8 @@ struct IncrementReport {
   double correction_ratio = 0; // ||last Newton correction|| / ||increment motion|| (the displacement test)
   bool extrapolated = false;   // started from the extrapolated predictor (see SolverOptions::extrapolate)
   bool force_only = false;     // accepted on the force test alone (a tenfold margin after several corrections)
+  int cutbacks = 0;            // failed attempts halved before this increment converged
+  double relative_size = 1;    // the increment's size over the step's nominal increment
 };
 
 // What the solver did: counts and wall time per phase (the linear solver's own figures are in
@@ -118,6 +121,9 @@ class StaticAnalysis {
     double previous_last_size = 0;                // that ramp's last converged increment (its fraction units)
   };
   void end_step(const std::map<ActionKey, std::pair<double, double>>& ramps);
+  // What a stop says: where Newton failed, what the controller tried, and what in the case to check.
+  std::string stop_message(const std::string& step_name, int ramp, int increment, double converged_fraction, double target,
+                           double nominal, const IncrementReport& last) const;
   // motion_floor2: squared motion below which the displacement test does not measure a correction (0: none).
   bool solve_increment(double step_fraction, double extrapolation, bool idle_step, bool loading_continues,
                        double motion_floor2, const std::map<ActionKey, std::pair<double, double>>& ramps,
@@ -149,8 +155,8 @@ class StaticAnalysis {
   std::vector<NodeState> previous_committed_state_;  // the converged state before committed_state_
   std::map<ActionKey, double> applied_motion_, committed_motion_;
   std::vector<double> internal_forces_, values_;
-  double force_floor_ = 0, length_scale_ = 0;
-  double roundoff_force_ = 0;  // forces below it are round-off of the internal forces (idle steps)
+  double length_scale_ = 0;
+  ConvergenceTest convergence_;
   double model_extent2_ = 0;  // squared diagonal of the reference bounding box
   double last_correction2_ = 0;
   void add_increment_work();
