@@ -9,7 +9,7 @@ namespace {
 // 3: the statistics add the residual and commit times.
 // 4: the statistics add the corrections cut by the step control (limited_corrections). Only this version is read:
 //    the statistics of the earlier ones have another layout.
-// 5: adds the load norms the step's convergence test measures against.
+// 5: adds the load norms the step's convergence test measures against, and the statistics the searched recoveries.
 constexpr int kStateVersion = 5;
 
 void save_nodes(ArchiveWriter& out, const std::vector<NodeState>& nodes) {

@@ -9,6 +9,7 @@
 namespace strandfem {
 namespace {
 constexpr int kEasyIncrementsBeforeRegrowth = 3;
+constexpr int kRecoveryLineSearchCuts = 4;  // halvings per correction in the retry of a failed increment
 }  // namespace
 
 std::string StaticAnalysis::stop_message(const std::string& step_name, int ramp, int increment, double converged_fraction,
@@ -22,10 +23,10 @@ std::string StaticAnalysis::stop_message(const std::string& step_name, int ramp,
                 std::min(opt.force_tolerance, opt.moment_tolerance), last.corrections);
   std::string message = text;
   std::snprintf(text, sizeof text,
-                "  tried: the plain predictor where the extrapolated one failed, the contact step control%s, and "
-                "halving the increment %d times, down to %.3g of the nominal size (%.3g of the step).\n",
-                opt.line_search_cuts > 0 ? (", line search (" + std::to_string(opt.line_search_cuts) + " halvings)").c_str() : "",
-                opt.max_cutbacks, std::ldexp(1.0, -opt.max_cutbacks), nominal * std::ldexp(1.0, -opt.max_cutbacks));
+                "  tried: the plain predictor where the extrapolated one failed, the contact step control, line search "
+                "(%d halvings per correction) at every size, and halving the increment %d times, down to %.3g of the "
+                "nominal size (%.3g of the step).\n",
+                std::max(opt.line_search_cuts, kRecoveryLineSearchCuts), opt.max_cutbacks, std::ldexp(1.0, -opt.max_cutbacks), nominal * std::ldexp(1.0, -opt.max_cutbacks));
   message += text;
   message +=
       "  check: a load or motion beyond what the strand can carry at this point (a wire yielding through, or sliding "
@@ -84,6 +85,7 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
     }
     int cutbacks = 0;
     bool plain_retry = false;  // the next attempt repeats a failed extrapolated one without extrapolation
+    bool searched_retry = false;  // the next attempt repeats a failed one at the same size with line search
     while (p.fraction < 1.0 - 1e-12) {
       // Never past the next point of the nominal grid (k / increments): after cut-backs the increments land on
       // the load levels the case asked for again.
@@ -115,6 +117,9 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
       plain_retry = false;
       // Ramped off: the factor falls linearly from its full value at the step's start to zero at its end.
       stabilization_factor_ = model_.options.stabilization * (model_.options.stabilization_ramp_off ? 1.0 - p.fraction : 1.0);
+      const bool searched = searched_retry;
+      searched_retry = false;
+      line_search_cuts_ = searched ? kRecoveryLineSearchCuts : model_.options.line_search_cuts;
       // Within a ramp, or across ramps that load the same way, there is a last increment to continue from; the first
       // increment of a ramp that turns the loading has none (p.last_size 0).
       const bool loading_continues = p.last_size > 0;
@@ -128,7 +133,10 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
                                             target - p.fraction, nominal)
               : 0.0;
       retrying_cut_increment_ = cutbacks > 0;
-      if (solve_increment(target, extrapolation, idle_step, loading_continues, motion_floor2, ramps, report, on_progress)) {
+      const IncrementAttempt attempt{target, extrapolation, idle_step, loading_continues, motion_floor2};
+      if (solve_increment(attempt, ramps, report, on_progress)) {
+        if (searched) ++statistics_.searched_recoveries;
+        report.searched_recovery = searched;
         if (retrying_plain) p.extrapolation_failed = true;
         if (report.force_only) ++statistics_.force_only_acceptances;
         bool pattern_changed = false;
@@ -174,6 +182,11 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
         if (report.extrapolated) {
           plain_retry = true;
           ++statistics_.plain_retries;
+          continue;
+        }
+        // Then once with line search, where the case runs without it: it changes the path, never the answer.
+        if (!searched && model_.options.line_search_cuts < kRecoveryLineSearchCuts) {
+          searched_retry = true;
           continue;
         }
         // Also stop when the size falls below what max_cutbacks halvings of the nominal size allow: converging

@@ -8,6 +8,7 @@
 
 #include "strandfem/core/scoped_timer.hpp"
 #include "strandfem/solver/krylov.hpp"
+#include "strandfem/solver/step_length.hpp"
 #include "strandfem/solver/tangent_dump.hpp"
 
 namespace strandfem {
@@ -176,11 +177,11 @@ void StaticAnalysis::extrapolate_free_motion(double factor) {
   }
 }
 
-bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation, bool idle_step, bool loading_continues,
-                                     double motion_floor2, const std::map<ActionKey, std::pair<double, double>>& ramps,
-                                     IncrementReport& report,
-                                     const std::function<void(const IncrementReport&)>& on_progress) {
+bool StaticAnalysis::solve_increment(const IncrementAttempt& attempt, const std::map<ActionKey, std::pair<double, double>>& ramps,
+                                     IncrementReport& report, const std::function<void(const IncrementReport&)>& on_progress) {
   const SolverOptions& opt = model_.options;
+  const double step_fraction = attempt.step_fraction, motion_floor2 = attempt.motion_floor2;
+  double extrapolation = attempt.extrapolation;
   const std::size_t node_count = state_.size();
   external_.assign(6 * node_count, 0.0);
   // Applied loads, and imposed motions: the driven DOFs move to their targets before iterating.
@@ -202,7 +203,7 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
   }
   convergence_.set_applied_loads(std::move(loads));
   update_slaves();
-  for (Interaction* interaction : model_state_.interactions()) interaction->begin_increment(loading_continues);
+  for (Interaction* interaction : model_state_.interactions()) interaction->begin_increment(attempt.loading_continues);
   const int n = dofs_.equation_count;
   std::vector<double> rhs(n);
   double increment_displacement2 = 0;
@@ -255,7 +256,7 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
   // the same loads: Newton could only chase round-off, and its displacement test (correction against the
   // increment's motion, both nil) could never pass. Accepted at once when its residual is round-off; the
   // interactions keep the states they converged with (contact forces of round-off size have no sign to act on).
-  if (idle_step && current.within_roundoff) {
+  if (attempt.idle_step && current.within_roundoff) {
     accept_iterate();
     report.residual_history.push_back(current.relative);
     report.residual_norm = current.relative;
@@ -291,9 +292,7 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
     report.iterations = iteration;
     if (on_progress) on_progress(report);
     if (!std::isfinite(current.relative)) return false;
-    // Measured on S32 case 1 (T = 40 kN) under bending: an attempt that fails first creeps down with line-search
-    // cuts, then climbs past its starting residual around the 9th correction and on to 1e3 at the 25th, while the
-    // retry converges in 3. Giving up at the climb saves the rest.
+    // Diverging (kDivergenceCheckAfter).
     if (since_change >= kDivergenceCheckAfter && current.relative > round_start) return false;
     // Displacement criterion: the last correction is small against the increment's motion (rotations
     // weighted by the mean element length).
@@ -306,8 +305,7 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
     // A wire hinging plastically between crossings is a soft mode along which Newton's corrections keep
     // alternating (tangent energy of either sign) while equilibrium holds far within the tolerance: after
     // kForceOnlyAfter corrections such an iterate is accepted on the force test alone (docs/theory.md).
-    // The reactions must have settled too: alternating iterates of a hinge can differ by 0.3 % in the strand's
-    // axial force at a relative residual of 5e-4 (measured), so they must agree within the same margin.
+    // The reactions must have settled too, within the same margin.
     const double margin = kForceOnlyMargin * std::min(opt.force_tolerance, opt.moment_tolerance);
     const bool force_margin = report.corrections >= kForceOnlyAfter && current.relative <= margin &&
                               std::abs(current.state.force - previous_reference) <=
@@ -334,49 +332,35 @@ bool StaticAnalysis::solve_increment(double step_fraction, double extrapolation,
     if (!solve_linear(rhs, linear_tolerance(current.relative))) return false;
     start = state_;
     correction = rhs;
-    // Backtracking: while the full correction raises the residual (contact switching, stick/slip, large
-    // rotations), halve it, at most opt.line_search_cuts times; the last try is kept either way. Not the first
-    // correction of an attempt: it carries the load step, and on it the residual is no measure of progress.
-    // Cardinal's return halves showed it: the full first correction raised the residual from 0.004 to 0.07-0.4
-    // (crossings pressed into the normal band) and the next two brought it within the tolerance, while the
-    // halved one left half the motion to the next correction, halved again, and Newton crept (docs/theory.md).
-    // After a cut-back the first correction is searched too: S32 case 4 (cycle 4, at 0.9 Vmax, 63e8e3b on two
-    // processes) stopped where the full first correction from a converged state raised the residual from 0.003
-    // to 3.8 at every size down to 1/256 of the nominal increment, while the searched one converged the full
-    // increment in 8 corrections (docs/theory.md, "Line search").
+    // Line search on every correction but an attempt's first, which carries the load step (its residual is no
+    // measure of progress); after a cut-back the first is searched too (docs/theory.md, "Line search").
     const bool first_correction = report.corrections == 1;
-    const int line_search_cuts = first_correction && !retrying_cut_increment_ ? 0 : opt.line_search_cuts;
+    const int line_search_cuts = first_correction && !retrying_cut_increment_ ? 0 : line_search_cuts_;
     for (Interaction* interaction : model_state_.interactions()) interaction->begin_correction();
-    double alpha = 1;
-    const double full_correction2 = last_correction2_ = apply_correction(alpha);
-    ResidualCheck trial = evaluate_residual();
-    // Step control: a correction that presses contacts its tangent did not know deep into the penalty stops where
-    // they have just closed. S32 case 4 (cycle 3, 0.85 of the return) stopped where an outer wire floated on
-    // crossings at the edge of the smoothing band (no force, no stiffness): the full first correction of a
-    // converged state's residual of 0.0014 swung it 0.33 mm sideways into its neighbour, 0.09 mm deep (1.6e5 N/mm),
-    // and left 6.6; cut to 0.08 it left 0.03 and the increment converged in 6 (docs/theory.md, "Step control").
-    double admissible = 1;
-    for (const Interaction* interaction : model_state_.interactions()) admissible = std::min(admissible, interaction->admissible_fraction());
-    if (admissible < 1) {
-      ++statistics_.limited_corrections;
-      alpha = admissible;
-      last_correction2_ = apply_correction(alpha);
-      trial = evaluate_residual();
-    }
-    for (int cut = 0; cut < line_search_cuts && !(trial.relative <= current.relative); ++cut) {
-      alpha *= 0.5;
-      last_correction2_ = apply_correction(alpha);
-      trial = evaluate_residual();
-    }
-    previous_reference = current.state.force;
-    current = trial;
-    // The divergence check (top of the loop) measures an attempt from where its searched corrections start: after the
-    // full first correction. Against the predictor's residual, S32 case 4's cycle-2 return failed an increment whose
-    // first correction left 0.84 and whose next seven fell steadily to 0.011, above the predictor's 0.0057.
-    if (first_correction) round_start = std::max(round_start, current.relative);
+    // Step control (the interactions' admissible fraction): a correction that presses contacts its tangent did not
+    // know deep into the penalty stops where they have just closed (docs/theory.md, "Step control").
+    const auto try_step = [&](double alpha) {
+      StepTrial t;
+      t.alpha = alpha;
+      t.correction2 = apply_correction(alpha);
+      t.check = evaluate_residual();
+      return t;
+    };
+    const auto admissible = [&] {
+      double fraction = 1;
+      for (const Interaction* interaction : model_state_.interactions()) fraction = std::min(fraction, interaction->admissible_fraction());
+      return fraction;
+    };
+    const StepLength step = choose_step_length(try_step, admissible, current.relative, line_search_cuts);
+    if (step.limited) ++statistics_.limited_corrections;
+    const ResidualCheck trial = step.accepted.check;
     // The displacement test measures what Newton asked for: a correction cut by the step control has not converged
     // because its cut part is short.
-    if (admissible < 1) last_correction2_ = std::max(last_correction2_, full_correction2);
+    last_correction2_ = step.limited ? std::max(step.accepted.correction2, step.full_correction2) : step.accepted.correction2;
+    previous_reference = current.state.force;
+    current = trial;
+    // The divergence check measures an attempt from where its searched corrections start: after the full first one.
+    if (first_correction) round_start = std::max(round_start, current.relative);
     accept_iterate();
     // A correction longer than the model itself is divergence, not progress: cut back at once.
     if (last_correction2_ > model_extent2_) return false;

@@ -29,6 +29,7 @@ struct IncrementReport {
   bool extrapolated = false;   // started from the extrapolated predictor (see SolverOptions::extrapolate)
   bool force_only = false;     // accepted on the force test alone (a tenfold margin after several corrections)
   int cutbacks = 0;            // failed attempts halved before this increment converged
+  bool searched_recovery = false;  // converged with line search after a failed attempt at this size without
   double relative_size = 1;    // the increment's size over the step's nominal increment
 };
 
@@ -42,6 +43,7 @@ struct AnalysisStatistics {
   int rejected_extrapolations = 0;  // extrapolated predictors worse than the plain one (not used)
   int force_only_acceptances = 0;  // increments accepted on the force test alone (see IncrementReport::force_only)
   int plain_retries = 0;       // failed extrapolated increments repeated at the same size without extrapolation
+  int searched_recoveries = 0; // failed increments converged at the same size with line search
   int limited_corrections = 0; // Newton corrections shortened by an interaction's step control (admissible_fraction)
   int double_precision_fallbacks = 0;  // single-precision factors that GMRES could not refine: solved in double
   double assembly_seconds = 0; // tangent assembly (elements and interactions) for Newton corrections
@@ -124,11 +126,16 @@ class StaticAnalysis {
   // What a stop says: where Newton failed, what the controller tried, and what in the case to check.
   std::string stop_message(const std::string& step_name, int ramp, int increment, double converged_fraction, double target,
                            double nominal, const IncrementReport& last) const;
-  // motion_floor2: squared motion below which the displacement test does not measure a correction (0: none).
-  bool solve_increment(double step_fraction, double extrapolation, bool idle_step, bool loading_continues,
-                       double motion_floor2, const std::map<ActionKey, std::pair<double, double>>& ramps,
-                       IncrementReport& report,
-                       const std::function<void(const IncrementReport&)>& on_progress);
+  // One Newton solve of an increment, as the load stepping asks for it.
+  struct IncrementAttempt {
+    double step_fraction = 0;    // the load fraction of the ramp the increment ends at
+    double extrapolation = 0;    // multiple of the last increment's free motion added to the predictor (0: none)
+    bool idle_step = false;      // nothing changes over the ramp: its start may already be in equilibrium
+    bool loading_continues = false;  // the loads change the way they did in the last converged increment
+    double motion_floor2 = 0;    // squared motion below which the displacement test does not measure a correction
+  };
+  bool solve_increment(const IncrementAttempt& attempt, const std::map<ActionKey, std::pair<double, double>>& ramps,
+                       IncrementReport& report, const std::function<void(const IncrementReport&)>& on_progress);
   void update_slaves();
   void extrapolate_free_motion(double factor);  // adds factor x (committed - previous committed) on free DOFs
   // Squared motion of every node from `from` to `to`, rotations weighted by the mean element length.
@@ -165,6 +172,7 @@ class StaticAnalysis {
   ViscousStabilization stabilization_;
   double stabilization_factor_ = 0;         // this increment's factor (SolverOptions::stabilization, ramped)
   bool retrying_cut_increment_ = false;     // this attempt follows a cut-back: its first correction is searched too
+  int line_search_cuts_ = 0;                // this attempt's line search (SolverOptions::line_search_cuts, or a recovery's)
   std::vector<double> external_;            // applied nodal loads of the current increment (6 per node)
   std::vector<double> committed_external_;  // and of the last converged one
   std::vector<double> committed_forces_;    // internal forces of the last converged state
