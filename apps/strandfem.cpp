@@ -55,15 +55,15 @@ int resolve_threads(int asked, const std::string& source) {
 // matplotlib). A missing or failing plotter is a warning: the results themselves are complete.
 // ", 1/4 of the nominal increment after 2 cut-backs" for an increment smaller than the step's nominal one.
 std::string increment_size_note(const strandfem::IncrementReport& r) {
-  const std::string damped = r.searched_recovery ? ", retried with line search" : "";
-  if (r.relative_size > 1 - 1e-9) return damped;
+  const std::string searched = r.searched_recovery ? ", with line search" : "";
+  if (r.relative_size > 1 - 1e-9) return searched;
   const double inverse = 1 / r.relative_size;
   char size[32];
   if (std::abs(inverse - std::round(inverse)) < 1e-6) std::snprintf(size, sizeof size, "1/%.0f", inverse);
   else std::snprintf(size, sizeof size, "%.3g", r.relative_size);
   std::string note = std::string(", ") + size + " of the nominal increment";
   if (r.cutbacks > 0) note += " after " + std::to_string(r.cutbacks) + (r.cutbacks == 1 ? " cut-back" : " cut-backs");
-  return note + damped;
+  return note + searched;
 }
 
 void draw_plots(const std::string& output_dir) {

@@ -24,8 +24,8 @@ std::string StaticAnalysis::stop_message(const std::string& step_name, int ramp,
   std::string message = text;
   std::snprintf(text, sizeof text,
                 "  tried: the plain predictor where the extrapolated one failed, the contact step control, line search "
-                "(%d halvings per correction) at every size, and halving the increment %d times, down to %.3g of the "
-                "nominal size (%.3g of the step).\n",
+                "(%d halvings per correction) after the first failure, and halving the increment %d times, down to %.3g "
+                "of the nominal size (%.3g of the step).\n",
                 std::max(opt.line_search_cuts, kRecoveryLineSearchCuts), opt.max_cutbacks, std::ldexp(1.0, -opt.max_cutbacks), nominal * std::ldexp(1.0, -opt.max_cutbacks));
   message += text;
   message +=
@@ -85,7 +85,6 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
     }
     int cutbacks = 0;
     bool plain_retry = false;  // the next attempt repeats a failed extrapolated one without extrapolation
-    bool searched_retry = false;  // the next attempt repeats a failed one at the same size with line search
     while (p.fraction < 1.0 - 1e-12) {
       // Never past the next point of the nominal grid (k / increments): after cut-backs the increments land on
       // the load levels the case asked for again.
@@ -117,8 +116,8 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
       plain_retry = false;
       // Ramped off: the factor falls linearly from its full value at the step's start to zero at its end.
       stabilization_factor_ = model_.options.stabilization * (model_.options.stabilization_ramp_off ? 1.0 - p.fraction : 1.0);
-      const bool searched = searched_retry;
-      searched_retry = false;
+      // The attempts after a failure search their corrections, where the case runs without line search.
+      const bool searched = cutbacks > 0 && model_.options.line_search_cuts < kRecoveryLineSearchCuts;
       line_search_cuts_ = searched ? kRecoveryLineSearchCuts : model_.options.line_search_cuts;
       // Within a ramp, or across ramps that load the same way, there is a last increment to continue from; the first
       // increment of a ramp that turns the loading has none (p.last_size 0).
@@ -182,11 +181,6 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
         if (report.extrapolated) {
           plain_retry = true;
           ++statistics_.plain_retries;
-          continue;
-        }
-        // Then once with line search, where the case runs without it: it changes the path, never the answer.
-        if (!searched && model_.options.line_search_cuts < kRecoveryLineSearchCuts) {
-          searched_retry = true;
           continue;
         }
         // Also stop when the size falls below what max_cutbacks halvings of the nominal size allow: converging

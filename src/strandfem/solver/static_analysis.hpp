@@ -29,7 +29,7 @@ struct IncrementReport {
   bool extrapolated = false;   // started from the extrapolated predictor (see SolverOptions::extrapolate)
   bool force_only = false;     // accepted on the force test alone (a tenfold margin after several corrections)
   int cutbacks = 0;            // failed attempts halved before this increment converged
-  bool searched_recovery = false;  // converged with line search after a failed attempt at this size without
+  bool searched_recovery = false;  // converged after cut-backs with line search the case does not ask for
   double relative_size = 1;    // the increment's size over the step's nominal increment
 };
 
@@ -43,7 +43,7 @@ struct AnalysisStatistics {
   int rejected_extrapolations = 0;  // extrapolated predictors worse than the plain one (not used)
   int force_only_acceptances = 0;  // increments accepted on the force test alone (see IncrementReport::force_only)
   int plain_retries = 0;       // failed extrapolated increments repeated at the same size without extrapolation
-  int searched_recoveries = 0; // failed increments converged at the same size with line search
+  int searched_recoveries = 0; // increments converged after cut-backs with line search the case does not ask for
   int limited_corrections = 0; // Newton corrections shortened by an interaction's step control (admissible_fraction)
   int double_precision_fallbacks = 0;  // single-precision factors that GMRES could not refine: solved in double
   double assembly_seconds = 0; // tangent assembly (elements and interactions) for Newton corrections
