@@ -100,3 +100,49 @@ TEST(ConvergenceTest, AppliedLoadAllowanceNeverFallsBelowRoundOff) {
 
 }  // namespace
 }  // namespace strandfem
+
+namespace strandfem {
+namespace {
+
+ResidualCheck passing_forces(double relative, double load_norm) {
+  ResidualCheck check;
+  check.relative = relative;
+  check.forces_ok = true;
+  check.state.force = load_norm;
+  return check;
+}
+
+TEST(ConvergenceDecision, CorrectionSmallAgainstTheIncrementsMotion) {
+  const ConvergenceTest test(tolerances(), 10.0, 0.0, 0.0);  // displacement tolerance 0.005
+  // A correction of 0.004 of the increment's motion passes, 0.006 does not.
+  EXPECT_TRUE(test.decide(passing_forces(1e-3, 100), {false, 2, 0.004 * 0.004, 1.0, 100}).converged);
+  const Convergence wide = test.decide(passing_forces(1e-3, 100), {false, 2, 0.006 * 0.006, 1.0, 100});
+  EXPECT_FALSE(wide.converged);
+  // Nothing passes without the force test.
+  ResidualCheck failing = passing_forces(1e-3, 100);
+  failing.forces_ok = false;
+  EXPECT_FALSE(test.decide(failing, {false, 2, 0.0, 1.0, 100}).converged);
+}
+
+TEST(ConvergenceDecision, PredictorOnlyFarWithinTheTolerance) {
+  const ConvergenceTest test(tolerances(), 10.0, 0.0, 0.0);
+  EXPECT_FALSE(test.decide(passing_forces(1e-4, 100), {true, 0, 0.0, 0.0, 0}).converged);  // 2 % of the tolerance
+  EXPECT_TRUE(test.decide(passing_forces(4e-6, 100), {true, 0, 0.0, 0.0, 0}).converged);   // 8e-4 of it
+}
+
+TEST(ConvergenceDecision, ForceTestAloneAfterSeveralCorrectionsWithSettledLoads) {
+  ConvergenceTest test(tolerances(), 10.0, 0.0, 0.0);
+  test.begin_step({100.0, 0.0});
+  const double wandering = 0.05 * 0.05;  // corrections of 5 % of the increment's motion: no displacement test
+  // Within a tenth of the tolerance, after 4 corrections, the load norm moved by 1e-4 of it: accepted, force only.
+  const Convergence settled = test.decide(passing_forces(4e-4, 100.0), {false, 4, wandering, 1.0, 100.01});
+  EXPECT_TRUE(settled.converged);
+  EXPECT_TRUE(settled.force_only);
+  // Too early, not far enough within the tolerance, or loads still moving (0.3 %): not accepted.
+  EXPECT_FALSE(test.decide(passing_forces(4e-4, 100.0), {false, 3, wandering, 1.0, 100.01}).converged);
+  EXPECT_FALSE(test.decide(passing_forces(6e-4, 100.0), {false, 4, wandering, 1.0, 100.01}).converged);
+  EXPECT_FALSE(test.decide(passing_forces(4e-4, 100.0), {false, 4, wandering, 1.0, 100.3}).converged);
+}
+
+}  // namespace
+}  // namespace strandfem

@@ -4,11 +4,17 @@
 #include <cmath>
 
 namespace strandfem {
+namespace {
+constexpr double kPredictorAcceptance = 1e-3;  // of the tolerance, for a predictor taken without correction
+constexpr int kForceOnlyAfter = 4;             // corrections before the force test alone may accept
+constexpr double kForceOnlyMargin = 0.1;       // of the tolerance, for such an acceptance
+}  // namespace
 
 ConvergenceTest::ConvergenceTest(const SolverOptions& options, double length_scale, double force_floor, double roundoff_force)
     : force_tolerance_(options.force_tolerance),
       moment_tolerance_(options.moment_tolerance),
       load_tolerance_(options.load_tolerance),
+      displacement_tolerance_(options.displacement_tolerance),
       length_scale_(length_scale),
       force_floor_(force_floor),
       roundoff_force_(roundoff_force) {}
@@ -67,6 +73,22 @@ ResidualCheck ConvergenceTest::measure(const DofMap& dofs, const std::vector<dou
   r.within_roundoff = force_residual <= force_tolerance_ * std::max(force_ref, roundoff_force_) &&
                       moment_residual <= moment_tolerance_ * std::max(moment_ref, roundoff_moment);
   return r;
+}
+
+Convergence ConvergenceTest::decide(const ResidualCheck& check, const IterateProgress& progress) const {
+  const double tolerance = std::min(force_tolerance_, moment_tolerance_);
+  const bool displacement_ok =
+      !progress.predictor
+          ? progress.correction2 <= displacement_tolerance_ * displacement_tolerance_ * progress.increment_motion2
+          : check.relative <= kPredictorAcceptance * tolerance;
+  const double margin = kForceOnlyMargin * tolerance;
+  const bool force_margin = progress.corrections >= kForceOnlyAfter && check.relative <= margin &&
+                            std::abs(check.state.force - progress.previous_load_norm) <=
+                                margin * std::max(check.state.force, step_reference_.force);
+  Convergence c;
+  c.converged = check.forces_ok && (displacement_ok || force_margin);
+  c.force_only = c.converged && !displacement_ok;
+  return c;
 }
 
 }  // namespace strandfem

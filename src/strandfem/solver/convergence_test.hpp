@@ -28,6 +28,21 @@ struct ResidualCheck {
   double worst_load = 0;          // largest applied-load residual over its allowance (<= 1: every load met)
 };
 
+// Where an iterate stands in its increment, for the convergence decision.
+struct IterateProgress {
+  bool predictor = true;          // the attempt's starting iterate, before any correction or contact round
+  int corrections = 0;            // Newton corrections made so far in this attempt
+  double correction2 = 0;         // squared norm of the last correction (rotations weighted by the element length)
+  double increment_motion2 = 0;   // squared motion of the increment so far (at least the cut-increment floor)
+  double previous_load_norm = 0;  // the load norm of the iterate before this one
+};
+
+// The decision at an iterate.
+struct Convergence {
+  bool converged = false;
+  bool force_only = false;  // accepted on the force test alone (the displacement test did not pass)
+};
+
 // The residual norms are taken against the larger of the iterate's load norms and the largest of the step's
 // converged states (its start included), so that a strand released to zero load is measured against the load
 // it carried; each applied load is met to load_tolerance of its own largest value in the step, however small it
@@ -51,9 +66,15 @@ class ConvergenceTest {
   // The test at an iterate; rhs (equation-sized) becomes minus the residual at the free DOFs.
   ResidualCheck measure(const DofMap& dofs, const std::vector<double>& internal, const std::vector<double>& external,
                         std::vector<double>& rhs) const;
+  // Converged: the force test, and the last correction within displacement_tolerance of the increment's motion. A
+  // predictor (no correction yet) passes only with its residual far within the tolerance, so that residuals do
+  // not pile up from increment to increment. After several corrections an iterate far within the force test whose
+  // load norm has settled is accepted on the force test alone: along a soft mode (a wire hinging plastically
+  // between crossings) the corrections keep alternating while equilibrium holds (docs/theory.md).
+  Convergence decide(const ResidualCheck& check, const IterateProgress& progress) const;
 
  private:
-  double force_tolerance_, moment_tolerance_, load_tolerance_;
+  double force_tolerance_, moment_tolerance_, load_tolerance_, displacement_tolerance_;
   double length_scale_, force_floor_, roundoff_force_;
   LoadReference step_reference_;
   std::vector<AppliedLoad> loads_;

@@ -15,11 +15,6 @@ namespace strandfem {
 
 namespace {
 constexpr int kMaxContactRounds = 40;  // contact set changes per increment before a cut-back
-constexpr double kPredictorAcceptance = 1e-3;  // of the tolerance, for a predictor taken without correction
-// After this many corrections an iterate within kForceOnlyMargin of the force tolerance is accepted on the force
-// test alone (the paper's criterion, with a tenfold margin; see solve_increment).
-constexpr int kForceOnlyAfter = 4;
-constexpr double kForceOnlyMargin = 0.1;
 // An attempt whose residual, this many corrections after the last contact change, is above what it was at that
 // change is diverging: it is cut back at once rather than after max_iterations (see solve_increment).
 constexpr int kDivergenceCheckAfter = 8;
@@ -294,24 +289,10 @@ bool StaticAnalysis::solve_increment(const IncrementAttempt& attempt, const std:
     if (!std::isfinite(current.relative)) return false;
     // Diverging (kDivergenceCheckAfter).
     if (since_change >= kDivergenceCheckAfter && current.relative > round_start) return false;
-    // Displacement criterion: the last correction is small against the increment's motion (rotations
-    // weighted by the mean element length).
-    // A predictor (plain or extrapolated) is accepted as it stands only when it is in equilibrium far within
-    // the tolerance: otherwise its residual would pile up from increment to increment, so one correction and
-    // the displacement test must confirm it.
-    const bool displacement_ok =
-        iteration > 0 ? last_correction2_ <= opt.displacement_tolerance * opt.displacement_tolerance * increment_displacement2
-                      : current.relative <= kPredictorAcceptance * std::min(opt.force_tolerance, opt.moment_tolerance);
-    // A wire hinging plastically between crossings is a soft mode along which Newton's corrections keep
-    // alternating (tangent energy of either sign) while equilibrium holds far within the tolerance: after
-    // kForceOnlyAfter corrections such an iterate is accepted on the force test alone (docs/theory.md).
-    // The reactions must have settled too, within the same margin.
-    const double margin = kForceOnlyMargin * std::min(opt.force_tolerance, opt.moment_tolerance);
-    const bool force_margin = report.corrections >= kForceOnlyAfter && current.relative <= margin &&
-                              std::abs(current.state.force - previous_reference) <=
-                                  margin * std::max(current.state.force, convergence_.step_reference().force);
-    if (current.forces_ok && (displacement_ok || force_margin)) {
-      report.force_only = !displacement_ok;
+    const Convergence decision =
+        convergence_.decide(current, {iteration == 0, report.corrections, last_correction2_, increment_displacement2, previous_reference});
+    if (decision.converged) {
+      report.force_only = decision.force_only;
       // Converged for the interactions' current states (contact: active set, held friction); they may
       // change them (contacts left in tension open) and Newton goes on.
       if (changes_at_convergence() == 0) return true;
