@@ -117,9 +117,24 @@ TEST(StrandProgram, NonConvergenceGivesExitCode3AndKeepsConvergedIncrements) {
   const ProgramRun r = run_program("run " + file + " -q -o " + out, "diverging");
   EXPECT_EQ(r.exit_code, 3) << r.stderr_text;
   EXPECT_NE(r.stderr_text.find("did not converge"), std::string::npos);
+  // The stop names where Newton failed, what was tried, and what in the case to check.
+  for (const char* part : {"increment 1:", "relative residual", "tried:", "line search", "halving the increment 1 times",
+                           "check:", "raise its `increments`"})
+    EXPECT_NE(r.stderr_text.find(part), std::string::npos) << part << "\n" << r.stderr_text;
   EXPECT_EQ(read_csv(std::filesystem::path(out) / "history.csv").size(), 2u);  // the pull step converged
   const nlohmann::json summary = nlohmann::json::parse(std::ifstream(std::filesystem::path(out) / "summary.json"));
   EXPECT_EQ(summary["status"], "not_converged");
+}
+
+// A progress line says when an increment is smaller than the step's nominal one, after how many cut-backs, and
+// whether line search was on (the resume case cuts its first increment twice).
+TEST(StrandProgram, ProgressLinesReportCutBacks) {
+  const std::string out = ::testing::TempDir() + "/progress_out";
+  const ProgramRun r = run_program("run " + case_path("cases/verification/resume_axial_cycles.yaml") + " -o " + out, "progress");
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("increment 1 (fraction 0.05, 1/4 of the nominal increment after 2 cut-backs, with line search)"),
+            std::string::npos) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("(fraction 0.1, 1/4 of the nominal increment)"), std::string::npos) << r.stderr_text;
 }
 
 TEST(NewtonConvergence, ResidualDecreasesQuadratically) {

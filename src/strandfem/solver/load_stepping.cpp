@@ -9,7 +9,7 @@
 namespace strandfem {
 namespace {
 constexpr int kEasyIncrementsBeforeRegrowth = 3;
-constexpr int kRecoveryLineSearchCuts = 4;  // halvings per correction in the retry of a failed increment
+constexpr int kRecoveryLineSearchCuts = 4;  // halvings per correction on the attempts after a failed one
 }  // namespace
 
 std::string StaticAnalysis::stop_message(const std::string& step_name, int ramp, int increment, double converged_fraction,
@@ -22,16 +22,19 @@ std::string StaticAnalysis::stop_message(const std::string& step_name, int ramp,
                 ramp + 1, step_name.c_str(), increment, converged_fraction, target, last.residual_norm,
                 std::min(opt.force_tolerance, opt.moment_tolerance), last.corrections);
   std::string message = text;
+  const int cuts = std::max(opt.line_search_cuts, kRecoveryLineSearchCuts);
+  const std::string search = opt.line_search_cuts >= kRecoveryLineSearchCuts ? "" : " after the first failure";
   std::snprintf(text, sizeof text,
                 "  tried: the plain predictor where the extrapolated one failed, the contact step control, line search "
-                "(%d halvings per correction) after the first failure, and halving the increment %d times, down to %.3g "
-                "of the nominal size (%.3g of the step).\n",
-                std::max(opt.line_search_cuts, kRecoveryLineSearchCuts), opt.max_cutbacks, std::ldexp(1.0, -opt.max_cutbacks), nominal * std::ldexp(1.0, -opt.max_cutbacks));
+                "(%d halvings per correction)%s, and halving the increment %d times, down to %.3g of the nominal size "
+                "(%.3g of the step).\n",
+                cuts, search.c_str(), opt.max_cutbacks, std::ldexp(1.0, -opt.max_cutbacks),
+                nominal * std::ldexp(1.0, -opt.max_cutbacks));
   message += text;
   message +=
       "  check: a load or motion beyond what the strand can carry at this point (a wire yielding through, or sliding "
-      "without end); wires that overlap in the reference geometry (`strandfem info` gives each layer's lateral_clearance_mm and radial_overlap_mm); too few "
-      "increments for this step (raise its `increments`).";
+      "without end); wires that overlap in the reference geometry (`strandfem info` gives each layer's "
+      "lateral_clearance_mm and radial_overlap_mm); too few increments for this step (raise its `increments`).";
   return message;
 }
 
