@@ -24,44 +24,50 @@ void ConvergenceTest::accept(const LoadReference& converged) {
   step_reference_.moment = std::max(step_reference_.moment, converged.moment);
 }
 
-LoadReference ConvergenceTest::load_norms(const DofMap& dofs, const std::vector<double>& internal,
-                                          const std::vector<double>& external) const {
-  double force2 = 0, moment2 = 0;
-  for (std::size_t node = 0; node < dofs.equation.size(); ++node) {
-    if (dofs.tie_of[node] >= 0) continue;
-    for (int c = 0; c < 6; ++c) {
-      const double value = dofs.equation[node][c] >= 0 ? external[6 * node + c] : internal[6 * node + c];
-      (c < 3 ? force2 : moment2) += value * value;
-    }
-  }
-  return {std::sqrt(force2), std::sqrt(moment2)};
-}
-
-ResidualCheck ConvergenceTest::measure(const DofMap& dofs, const std::vector<double>& internal,
-                                       const std::vector<double>& external, std::vector<double>& rhs) const {
-  double free_force2 = 0, free_moment2 = 0, load_force2 = 0, load_moment2 = 0;
+namespace {
+// Squared norms over the nodes that are not tied: residual forces and moments at free DOFs, and the loads (applied
+// at free DOFs, reactions at constrained ones); rhs, if given, becomes minus the residual.
+struct SquaredNorms {
+  double free_force = 0, free_moment = 0, load_force = 0, load_moment = 0;
+};
+SquaredNorms squared_norms(const DofMap& dofs, const std::vector<double>& internal, const std::vector<double>& external,
+                           std::vector<double>* rhs) {
+  SquaredNorms n;
   for (std::size_t node = 0; node < dofs.equation.size(); ++node) {
     if (dofs.tie_of[node] >= 0) continue;
     for (int c = 0; c < 6; ++c) {
       const int eq = dofs.equation[node][c];
       const double f_int = internal[6 * node + c], f_ext = external[6 * node + c];
-      const double load = eq >= 0 ? f_ext : f_int;  // applied load, or reaction
-      (c < 3 ? load_force2 : load_moment2) += load * load;
+      const double load = eq >= 0 ? f_ext : f_int;
+      (c < 3 ? n.load_force : n.load_moment) += load * load;
       if (eq < 0) continue;
       const double residual = f_int - f_ext;
-      rhs[eq] = -residual;
-      (c < 3 ? free_force2 : free_moment2) += residual * residual;
+      if (rhs) (*rhs)[eq] = -residual;
+      (c < 3 ? n.free_force : n.free_moment) += residual * residual;
     }
   }
+  return n;
+}
+}  // namespace
+
+LoadReference ConvergenceTest::load_norms(const DofMap& dofs, const std::vector<double>& internal,
+                                          const std::vector<double>& external) const {
+  const SquaredNorms n = squared_norms(dofs, internal, external, nullptr);
+  return {std::sqrt(n.load_force), std::sqrt(n.load_moment)};
+}
+
+ResidualCheck ConvergenceTest::measure(const DofMap& dofs, const std::vector<double>& internal,
+                                       const std::vector<double>& external, std::vector<double>& rhs) const {
+  const SquaredNorms n = squared_norms(dofs, internal, external, &rhs);
   ResidualCheck r;
-  r.state = {std::sqrt(load_force2), std::sqrt(load_moment2)};
+  r.state = {std::sqrt(n.load_force), std::sqrt(n.load_moment)};
   // Each reference borrows from the other through the mean element length, so that a case loaded only by moments
   // (or only by forces) still has a meaningful scale for both residuals.
   const double force_norm = std::max(r.state.force, step_reference_.force);
   const double moment_norm = std::max(r.state.moment, step_reference_.moment);
   const double force_ref = std::max({force_norm, moment_norm / length_scale_, force_floor_});
   const double moment_ref = std::max(moment_norm, force_ref * length_scale_);
-  const double force_residual = std::sqrt(free_force2), moment_residual = std::sqrt(free_moment2);
+  const double force_residual = std::sqrt(n.free_force), moment_residual = std::sqrt(n.free_moment);
   r.relative = std::max(force_residual / force_ref, moment_residual / moment_ref);
   const double roundoff_moment = roundoff_force_ * length_scale_;
   for (const AppliedLoad& load : loads_) {
