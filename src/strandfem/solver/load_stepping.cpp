@@ -121,7 +121,6 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
       stabilization_factor_ = model_.options.stabilization * (model_.options.stabilization_ramp_off ? 1.0 - p.fraction : 1.0);
       // The attempts after a failure search their corrections, where the case runs without line search.
       const bool searched = cutbacks > 0 && model_.options.line_search_cuts < kRecoveryLineSearchCuts;
-      line_search_cuts_ = searched ? kRecoveryLineSearchCuts : model_.options.line_search_cuts;
       // Within a ramp, or across ramps that load the same way, there is a last increment to continue from; the first
       // increment of a ramp that turns the loading has none (p.last_size 0).
       const bool loading_continues = p.last_size > 0;
@@ -134,8 +133,8 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
               ? cut_increment_motion_floor2(motion2(committed_state_, previous_committed_state_), p.last_size,
                                             target - p.fraction, nominal)
               : 0.0;
-      retrying_cut_increment_ = cutbacks > 0;
-      const IncrementAttempt attempt{target, extrapolation, idle_step, loading_continues, motion_floor2};
+      const IncrementAttempt attempt{target, extrapolation, idle_step, loading_continues, motion_floor2, cutbacks > 0,
+                                     searched ? kRecoveryLineSearchCuts : model_.options.line_search_cuts};
       if (solve_increment(attempt, ramps, report, on_progress)) {
         if (searched) ++statistics_.searched_recoveries;
         report.searched_recovery = searched;

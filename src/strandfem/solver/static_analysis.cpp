@@ -316,7 +316,7 @@ bool StaticAnalysis::solve_increment(const IncrementAttempt& attempt, const std:
     // Line search on every correction but an attempt's first, which carries the load step (its residual is no
     // measure of progress); after a cut-back the first is searched too (docs/theory.md, "Line search").
     const bool first_correction = report.corrections == 1;
-    const int line_search_cuts = first_correction && !retrying_cut_increment_ ? 0 : line_search_cuts_;
+    const int line_search_cuts = first_correction && !attempt.after_cutback ? 0 : attempt.line_search_cuts;
     for (Interaction* interaction : model_state_.interactions()) interaction->begin_correction();
     // Step control (the interactions' admissible fraction): a correction that presses contacts its tangent did not
     // know deep into the penalty stops where they have just closed (docs/theory.md, "Step control").

@@ -133,6 +133,8 @@ class StaticAnalysis {
     bool idle_step = false;      // nothing changes over the ramp: its start may already be in equilibrium
     bool loading_continues = false;  // the loads change the way they did in the last converged increment
     double motion_floor2 = 0;    // squared motion below which the displacement test does not measure a correction
+    bool after_cutback = false;  // follows a failed attempt: its first correction is searched too
+    int line_search_cuts = 0;    // halvings per correction (SolverOptions::line_search_cuts, or the recovery's)
   };
   bool solve_increment(const IncrementAttempt& attempt, const std::map<ActionKey, std::pair<double, double>>& ramps,
                        IncrementReport& report, const std::function<void(const IncrementReport&)>& on_progress);
@@ -171,8 +173,6 @@ class StaticAnalysis {
   ElementDamping damping() const { return {&stabilization_, &committed_state_, stabilization_factor_}; }  // the converged increment's external work and stabilization energy into energies_
   ViscousStabilization stabilization_;
   double stabilization_factor_ = 0;         // this increment's factor (SolverOptions::stabilization, ramped)
-  bool retrying_cut_increment_ = false;     // this attempt follows a cut-back: its first correction is searched too
-  int line_search_cuts_ = 0;                // this attempt's line search (SolverOptions::line_search_cuts, or a recovery's)
   std::vector<double> external_;            // applied nodal loads of the current increment (6 per node)
   std::vector<double> committed_external_;  // and of the last converged one
   std::vector<double> committed_forces_;    // internal forces of the last converged state
