@@ -255,6 +255,7 @@ TEST(ContactSet, CrossingPastAWiresEndOpens) {
   mesh.add_line("across", 2, 0, 0, 2, [&](double t) { return std::make_pair(Vec3(offset, 20.0 * t - 10.0, 1.0), Mat3::Identity()); });
   ContactSettings settings = enabled_contact();
   settings.initial_overlap = InitialOverlap::kKeep;
+  settings.normal_smoothing = 0.0;  // the plain law, whose active points hold a tension within an increment
   ContactSet contacts;
   contacts.initialize(mesh, settings);
   ASSERT_EQ(contacts.radial_point_count(), 1);
@@ -452,8 +453,14 @@ TEST(ContactSet, InitialOverlapIsOffset) {
   contacts.initialize(mesh, enabled_contact());
   std::vector<NodeState> state = reference_state(mesh);
   contacts.evaluate(mesh, state, false);
-  // Touching with no force: the 0.1 mm nominal overlap is taken out.
-  for (const ContactResponse& r : contacts.responses()) EXPECT_NEAR(r.normal_force, 0.0, 1e-6);
+  // Touching: the 0.1 mm nominal overlap is taken out; what remains is the onset's force at zero gap, k_n s / 4,
+  // that of a penetration of a quarter of the onset width s (the default, 1e-5 of the 2 mm diameter).
+  const double onset_width = kNormalOnsetPerDiameter * 2.0;
+  for (const ContactResponse& r : contacts.responses()) {
+    EXPECT_NEAR(r.gap, 0.0, 1e-12);
+    EXPECT_NEAR(r.normal_force, normal_force(contacts.points()[0].stiffness.normal, onset_width, 0.0), 1e-9);
+    EXPECT_NEAR(r.normal_force, contacts.points()[0].stiffness.normal * onset_width / 4, 1e-9);
+  }
   // Pressing 0.01 mm further closes the contacts with the penalty force of 0.01 mm only.
   for (std::size_t n = 0; n < state.size(); ++n)
     if (mesh.nodes[n].wire == 1) state[n].position.x() -= 0.01;

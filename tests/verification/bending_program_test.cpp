@@ -89,7 +89,7 @@ TEST(BendingProgram, StickingStrandHasNoLoopAndApproachesEImax) {
       std::stringstream text;
       text << in.rdbuf();
       std::string yaml = text.str();
-      const std::string key = "normal_smoothing: 1.0e-4";
+      const std::string key = "friction: 5";
       yaml.replace(yaml.find(key), key.size(), key + ", elastic_slip: " + slip);
       std::ofstream(case_file) << yaml;
     }

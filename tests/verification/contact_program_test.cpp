@@ -64,6 +64,20 @@ TEST(ContactProgram, StepControlStopsACorrectionWhereAnOpenCrossingHasJustClosed
   const auto history = read_csv(run.output / "results" / "history.csv");
   ASSERT_EQ(history.size(), 1u);
   EXPECT_LE(history[0].at("newton_iterations"), 4);
+  // The default normal onset (3e-5 mm here) holds the 36 N within its band: the same force to 1e-4, the same cut.
+  std::ifstream case_in(case_path("cases/verification/pushed_wire_step_control.yaml"));
+  std::string text((std::istreambuf_iterator<char>(case_in)), std::istreambuf_iterator<char>());
+  const std::string key = ", normal_smoothing: 0";
+  ASSERT_NE(text.find(key), std::string::npos);
+  text.erase(text.find(key), key.size());
+  const std::string file = ::testing::TempDir() + "/step_control_onset.yaml";
+  std::ofstream(file) << text;
+  const std::string out = ::testing::TempDir() + "/step_control_onset_out";
+  const ProgramRun onset = run_program("run " + file + " -q -o " + out, "step_control_onset");
+  ASSERT_EQ(onset.exit_code, 0) << onset.stderr_text;
+  EXPECT_NEAR(read_csv(std::filesystem::path(out) / "contacts.csv").at(0).at("normal_force"), P, 1e-4 * P);
+  const auto onset_summary = nlohmann::json::parse(std::ifstream(std::filesystem::path(out) / "summary.json"));
+  EXPECT_EQ(onset_summary.at("solver_statistics").at("limited_corrections").get<int>(), 1);
 }
 
 TEST(ContactProgram, ParallelWiresLineLoadStickSlipAndHysteresis) {

@@ -178,18 +178,18 @@ TEST(Resume, AddsCyclesToTheLastStepOnly) {
 // A run stopped after a cycle closed already has that cycle's loop in loops.csv (rewritten as each cycle
 // closes, not only when the run ends).
 TEST(Resume, LoopsOfClosedCyclesAreWrittenBeforeTheRunEnds) {
-  const ProgramRun stopped = run_case(kCase, "resume_loops", "--stop-after 19");
+  const ProgramRun stopped = run_case(kCase, "resume_loops", "--stop-after 14");
   ASSERT_EQ(stopped.exit_code, 5) << stopped.stderr_text;
   int closed = 0;  // rows that end a returning half: a whole load fraction
   for (const auto& r : read_csv(stopped.output / "results" / "history.csv"))
     closed += r.at("returning") == 1 && std::abs(r.at("load_factor") - std::round(r.at("load_factor"))) < 1e-9;
   ASSERT_EQ(closed, 1) << "the stop must fall after the first cycle and before the second closes";
   EXPECT_EQ(read_csv(stopped.output / "results" / "loops.csv").size(), 1u);
-  // summary.json says it stopped, with its 19 increments and the solver's counts so far (for partial benchmarks).
+  // summary.json says it stopped, with its 14 increments and the solver's counts so far (for partial benchmarks).
   const nlohmann::json summary = nlohmann::json::parse(std::ifstream(stopped.output / "results" / "summary.json"));
   EXPECT_EQ(summary["status"], "stopped");
-  EXPECT_EQ(summary["converged_increments"], 19);
-  EXPECT_GE(summary["solver_statistics"]["newton_iterations"].get<int>(), 19);
+  EXPECT_EQ(summary["converged_increments"], 14);
+  EXPECT_GE(summary["solver_statistics"]["newton_iterations"].get<int>(), 14);
   EXPECT_GT(summary["solver_statistics"]["factorizations"].get<int>(), 0);
   EXPECT_GT(summary["wall_time_s"].get<double>(), 0.0);
   // ... and the results so far: the closed loop, the check of each peak's curve reached, the energies.

@@ -35,7 +35,7 @@ void ContactSettings::validate() const {
   if (!(stabilization >= 0 && stabilization < 1))
     throw std::invalid_argument("contact.stabilization must be in [0, 1) (a fraction of the normal penalty), got " +
                                 std::to_string(stabilization));
-  if (!(normal_smoothing >= 0)) throw std::invalid_argument("contact.normal_smoothing must be >= 0 (mm)");
+  if (normal_smoothing && !(*normal_smoothing >= 0)) throw std::invalid_argument("contact.normal_smoothing must be >= 0 (mm)");
   require_positive(search_margin, "search_margin");
   if (!(pattern_margin >= 0 && pattern_margin < 1)) throw std::invalid_argument("contact.pattern_margin must be in [0, 1)");
   if (!(touch_tolerance >= 0 && touch_tolerance < 0.5)) throw std::invalid_argument("contact.touch_tolerance must be in [0, 0.5)");
@@ -96,7 +96,7 @@ PenaltyStiffness penalty_stiffness(const ContactSettings& s, bool line_contact, 
                                    double element_size, double friction) {
   PenaltyStiffness k;
   k.normal = s.normal_factor * youngs_modulus * diameter * s.normal_multiplier;
-  k.smoothing = s.normal_smoothing;
+  k.smoothing = s.normal_smoothing.value_or(kNormalOnsetPerDiameter * diameter);
   // mu = 0 would give no stick stiffness at all; frictionless contacts need none.
   k.tangential = s.tangential_factor * friction * youngs_modulus * diameter * diameter * s.tangential_multiplier / element_size;
   if (line_contact) {

@@ -58,6 +58,10 @@ enum class TangentialPenalty {
   kElasticSlip  // from an allowed elastic slip: K_t = mu P / (elastic_slip h), P of the last converged state
 };
 
+// The default normal onset width per diameter of the thinner wire: a band where the answer no longer moves
+// (docs/validation.md, "Regularization: the normal onset").
+constexpr double kNormalOnsetPerDiameter = 1e-5;
+
 struct ContactSettings {
   bool enabled = false;
   // Penalty factors of eqs. 2.5-2.6: K_n = fKn E d xi_n and K_t = fKt mu E d^2 xi_t / h (N/mm, point
@@ -99,8 +103,9 @@ struct ContactSettings {
   // the nominal layer radii leave crossing gaps of a few 1e-2 mm on which outer wires would float.
   double touch_tolerance = 0.02;
   // Width (mm) of the gap band |g| < s over which the normal force sets in smoothly (C1, quadratic), so that
-  // contacts near zero force do not switch one by one; 0: the plain penalty law with the active set.
-  double normal_smoothing = 0.0;
+  // contacts near zero force do not switch one by one; none: kNormalOnsetPerDiameter x the thinner wire's
+  // diameter; 0: the plain penalty law with the active set.
+  std::optional<double> normal_smoothing;
   // Contact stabilization: a tangential spring of this fraction of the normal penalty at every contact point,
   // anchored where the point was at the last converged increment, so that it resists only the motion within an
   // increment (a damper in load time). Wires whose contacts slide freely (no friction, or eq. 2.6's sliding

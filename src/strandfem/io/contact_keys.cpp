@@ -136,7 +136,8 @@ nlohmann::json resolved_contact_settings(const ContactSettings& k) {
                              {"elastic_slip", k.elastic_slip}, {"search_margin", k.search_margin}, {"pattern_margin", k.pattern_margin}, {"line_contact_angle", k.line_contact_angle},
                              {"line_points", k.line_points},
                              {"initial_overlap", k.initial_overlap == InitialOverlap::kOffset ? "offset" : "keep"}, {"touch_tolerance", k.touch_tolerance},
-                             {"normal_smoothing", k.normal_smoothing}, {"stabilization", k.stabilization},
+                             {"normal_smoothing", k.normal_smoothing ? nlohmann::json(*k.normal_smoothing) : nlohmann::json(nullptr)},
+                             {"normal_onset_per_diameter", k.normal_smoothing ? nlohmann::json(nullptr) : nlohmann::json(kNormalOnsetPerDiameter)}, {"stabilization", k.stabilization},
                              {"zones", k.zone_friction.size()}};
   // Each material pair with the coefficient and the mu2/mu1 it runs with (outside zones) on the interfaces it
   // names; mu and orthotropy_ratio also at the top where they are the same on all of them.
