@@ -186,6 +186,19 @@ TEST(ContactSettings, PenaltyStiffnessFormulas) {
   EXPECT_NEAR(line.tangential, point.tangential / d, 1e-9 * line.tangential);
 }
 
+// The normal onset: 1e-5 of the thinner wire's diameter unless the case sets a width (0: the plain law).
+TEST(ContactSettings, NormalOnsetWidthFollowsTheWireSizeUnlessSet) {
+  ContactSettings s;
+  EXPECT_DOUBLE_EQ(penalty_stiffness(s, false, 188000, 3.5, 10, 0.3).smoothing, 3.5e-5);
+  EXPECT_DOUBLE_EQ(penalty_stiffness(s, true, 188000, 5.0, 10, 0.3).smoothing, 5.0e-5);
+  s.normal_smoothing = 1e-3;
+  EXPECT_DOUBLE_EQ(penalty_stiffness(s, true, 188000, 5.0, 10, 0.3).smoothing, 1e-3);
+  s.normal_smoothing = 0.0;
+  EXPECT_DOUBLE_EQ(penalty_stiffness(s, true, 188000, 5.0, 10, 0.3).smoothing, 0.0);
+  s.normal_smoothing = -1e-3;
+  EXPECT_THROW(s.validate(), std::invalid_argument);
+}
+
 TEST(ContactKinematics, ClosestPointsOfCrossingLines) {
   ElementCenterline<double> a = {V3<double>{-1, 0, 0}, V3<double>{0, 0, 0}, V3<double>{1, 0, 0}};
   ElementCenterline<double> b = {V3<double>{0.3, -1, 2}, V3<double>{0.3, 0, 2}, V3<double>{0.3, 1, 2}};
