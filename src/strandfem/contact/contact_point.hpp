@@ -19,11 +19,10 @@ using ContactVector = PairVector;
 using ContactMatrix = PairMatrix;
 constexpr double kContactActivation = 1e-9;  // closed when gap <= this x (r_a + r_b)
 constexpr double kActiveSeparationLimit = 0.05;  // an active point beyond this gap x (r_a + r_b) opens at once
-// Step control (ContactSet::admissible_fraction): the closing depth of a point is the normal smoothing width, and
-// at least this fraction of r_a + r_b (9e-4 mm for S32's 3.5-mm wires). At S32's smoothing of 1e-3 mm one closing
-// depth is a force of 6.4 kN at a crossing and 1.8 kN/mm along a line contact, 2-3 times the largest that S32
-// carries under bending (2.35 kN, 0.84 kN/mm in cycle 3); a correction that closes a point deeper than
-// kDeepClosing closing depths is shortened.
+// Step control (ContactSet::admissible_fraction): the closing depth of a point is the normal onset width, and at
+// least this fraction of r_a + r_b (9e-4 mm for S32's 3.5-mm wires: 6 kN at a crossing, 1.6 kN/mm along a line
+// contact, above what S32 carries under bending); a correction that closes a point deeper than kDeepClosing
+// closing depths is shortened.
 constexpr double kClosingDepthFraction = 2.5e-4;
 constexpr double kDeepClosing = 10.0;
 inline double closing_depth(double smoothing, double radius_sum) { return std::max(smoothing, kClosingDepthFraction * radius_sum); }
