@@ -7,7 +7,8 @@
   the loop from the previous peak (the previous return and this loading: the paper's Fig. 9b presentation);
 - bending_deflection.png: the core's deflection along the strand at each cycle's peak load beside eq. 3.2 for
   EImax and EImin, and EImin with the wires' shear (deflection_curves.csv), titled with summary.json's check of
-  the first peak's curve against those bounds;
+  the first peak's curve against those bounds; beside it, the curve as the paper draws it (Figs. 8, 9a, 15a):
+  the rise below the load point over 150 mm either side, with eq. 3.2's;
 - bending_wire_forces.png: wire axial force F at the first cycle's peak load and its change dF since V = 0,
   along the half strand, for the wires near the plane of the load and near the plane across it (paper
   Figs. 12-13; wire_profiles.csv);
@@ -96,7 +97,7 @@ def plot_folder(folder):
     written.append(save(fig, ax, "midspan deflection (mm), from the start of the first cycle", "transverse load V (N)",
                         os.path.join(folder, "bending_hysteresis.png"), legend_below=True))
     if curves:
-        fig, ax = plt.subplots(figsize=(6, 4.5))
+        fig, (ax, near) = plt.subplots(1, 2, figsize=(11, 4.5))
         for c in sorted({int(r["cycle"]) for r in curves}):
             pts = [r for r in curves if int(r["cycle"]) == c]
             z = [float(r["z_mm"]) for r in pts]
@@ -107,13 +108,36 @@ def plot_folder(folder):
                 if "eq32_ei_min_shear_mm" in pts[0]:
                     ax.plot(z, [float(r["eq32_ei_min_shear_mm"]) for r in pts], "k-.", lw=0.8,
                             label="EImin with the wires' shear")
+            if "rise_from_load_mm" in pts[0]:
+                draw_rise_from_load(near, pts, c)
         check = curve_check_title(folder)
         if check:
             ax.set_title(check, fontsize=8)
-        written.append(save(fig, ax, "axial position z (mm)", "core deflection at peak V (mm)",
-                            os.path.join(folder, "bending_deflection.png")))
+        ax.set_xlabel("axial position z (mm)")
+        ax.set_ylabel("core deflection at peak V (mm)")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+        written.append(save(fig, near, "distance from the load point (mm), both sides",
+                            "rise below the load point at peak V (mm)", os.path.join(folder, "bending_deflection.png")))
     written += plot_profiles(folder)
     return written
+
+
+def draw_rise_from_load(ax, pts, cycle, span=150.0):
+    """The curve as the paper's Figs. 8, 9a and 15a draw it: each side's rise below the load point over `span` mm,
+    beside eq. 3.2's (the first cycle draws the references)."""
+    near = [r for r in pts if abs(float(r["z_from_load_mm"])) <= span + 1e-9]
+    for side, style in ((-1, "-"), (1, "--")):
+        half = sorted((abs(float(r["z_from_load_mm"])), float(r["rise_from_load_mm"])) for r in near
+                      if side * float(r["z_from_load_mm"]) >= 0)
+        ax.plot([d for d, _ in half], [y for _, y in half], style, lw=1,
+                label=f"model, cycle {cycle}, {'towards z = 0' if side < 0 else 'towards z = L'}")
+    if cycle == 1:
+        half = sorted((abs(float(r["z_from_load_mm"])), float(r["eq32_ei_max_rise_mm"]), float(r["eq32_ei_min_rise_mm"]))
+                      for r in near if float(r["z_from_load_mm"]) >= 0)
+        ax.plot([d for d, _, _ in half], [y for _, y, _ in half], "k--", lw=1, label="EImax (eq. 3.2)")
+        ax.plot([d for d, _, _ in half], [y for _, _, y in half], "k:", lw=1, label="EImin (eq. 3.2)")
+    ax.set_xlim(0, span)
 
 
 def curve_check_title(folder):

@@ -76,6 +76,25 @@ TEST(TensionedBeam, CurveBoundsCheckCountsAndLocatesTheWorstNodes) {
   EXPECT_EQ(inner.largest_shortfall, 0.0);
 }
 
+// The rise from the load point of eq. 3.2's own curve, sampled every 5 mm, is the closed form's y(L/2) - y(L/2 - d)
+// to the linear interpolation's error; an unsymmetric curve gives the mean of its two sides.
+TEST(TensionedBeam, RiseFromTheLoadPointOfEq32AndOfAnUnsymmetricCurve) {
+  const double V = 5000, T = 40000, L = 1000, EI = 82.7e6;  // S32 case 1, EImin
+  std::vector<DeflectionPoint> curve;
+  for (int i = 0; i <= 200; ++i) {
+    const double z = 5.0 * i;
+    curve.push_back({z, tensioned_beam_deflection(V, T, EI, L, std::min(z, L - z))});
+  }
+  for (const double d : {45.0, 150.0, 152.5}) {
+    const double exact = tensioned_beam_deflection(V, T, EI, L, 0.5 * L) - tensioned_beam_deflection(V, T, EI, L, 0.5 * L - d);
+    EXPECT_NEAR(rise_from_load_point(curve, 0.5 * L, d), exact, 1e-3 * exact) << d;
+  }
+  const std::vector<DeflectionPoint> tilted = {{0, 0}, {10, 1}, {20, 4}, {30, 3}, {40, 0}};
+  EXPECT_DOUBLE_EQ(rise_from_load_point(tilted, 20, 10), 4 - 0.5 * (1 + 3));
+  EXPECT_DOUBLE_EQ(rise_from_load_point(tilted, 20, 5), 4 - 0.5 * (2.5 + 3.5));
+  EXPECT_DOUBLE_EQ(rise_from_load_point(tilted, 20, 30), 4.0);  // both sides beyond the ends take the end points
+}
+
 TEST(TensionedBeam, EquivalentStiffnessInvertsEq31) {
   const double T = 280000, L = 1000, V = 40000;
   for (const double EI : {82.7e6, 1e9, 6357.8e6}) {

@@ -68,6 +68,29 @@ TEST(BendingProgram, FrictionlessStrandBendsCloseToEIminWithoutLoop) {
     EXPECT_NEAR(check["largest_excess_x_mm"].get<double>(), largest_excess_x, 1e-3) << key;
   }
   EXPECT_LT(checks[0]["beyond_clamp_edge"]["nodes"].get<int>(), checks[0]["all_nodes"]["nodes"].get<int>());
+  // From the load point (midspan, z = 100 mm): each node's rise below it, beside eq. 3.2's; summary.json gives the
+  // rise 45 and 90 mm either side, the mean of both sides, which the file's columns give again here.
+  double load_deflection = 0;
+  for (const auto& row : curve)
+    if (row.at("z_from_load_mm") == 0) load_deflection = row.at("deflection_mm");
+  ASSERT_GT(load_deflection, y_max);
+  for (const auto& row : curve) {
+    EXPECT_NEAR(row.at("z_from_load_mm"), row.at("z_mm") - 100.0, 1e-9);
+    EXPECT_NEAR(row.at("rise_from_load_mm"), load_deflection - row.at("deflection_mm"), 1e-6 * y_min);
+    EXPECT_NEAR(row.at("rise_from_load_mm"), row.at("eq32_ei_min_rise_mm"), 0.10 * y_min) << "z = " << row.at("z_mm");
+  }
+  const nlohmann::json& rises = checks[0]["from_load_point"];
+  ASSERT_EQ(rises.size(), 3u);
+  for (const nlohmann::json& r : rises) {
+    const double d = r["distance_mm"].get<double>();
+    if (d > 100) continue;  // beyond this 200 mm strand's clamps
+    double sides = 0;
+    for (const auto& row : curve)
+      if (std::abs(std::abs(row.at("z_from_load_mm")) - d) < 1e-6) sides += 0.5 * row.at("rise_from_load_mm");
+    if (std::fmod(d, 5.0) == 0) EXPECT_NEAR(r["rise_mm"].get<double>(), sides, 1e-6 * y_min) << d;
+    EXPECT_GT(r["rise_mm"].get<double>(), r["eq32_ei_max_mm"].get<double>()) << d;
+    EXPECT_NEAR(r["rise_mm"].get<double>(), r["eq32_ei_min_mm"].get<double>(), 0.10 * y_min) << d;
+  }
   // history.csv: the cyclic step's two halves are cycle 1, out then back.
   const auto history = read_csv(run.output / "results" / "history.csv");
   int out = 0, back = 0;

@@ -8,6 +8,20 @@
 #include "strandfem/post/analytic.hpp"
 
 namespace strandfem {
+namespace {
+
+// The paper draws the curve over 150 mm from the load point and reads Cardinal's up to 45 mm (section 5.1).
+constexpr double kRiseDistanceMm[] = {45.0, 90.0, 150.0};
+
+// The node that carries the transverse load of the first cyclic step; the monitor node if none does.
+int transverse_load_node(const CaseDefinition& c) {
+  for (const LoadStep& step : c.model.steps)
+    for (const NodalAction& a : step.actions)
+      if (step.cycles > 0 && a.kind == NodalAction::kForce && (a.component == kUx || a.component == kUy)) return a.node;
+  return c.monitor_node;
+}
+
+}  // namespace
 
 BendingWriter::BendingWriter(const std::filesystem::path& directory, const CaseDefinition& c, bool resuming)
     : directory_(directory), case_(c) {
@@ -17,9 +31,11 @@ BendingWriter::BendingWriter(const std::filesystem::path& directory, const CaseD
   ei_max_ = bounds.ei_max;
   ei_min_ = bounds.ei_min;
   wire_shear_stiffness_ = bounds.wire_shear_stiffness;
+  load_node_ = transverse_load_node(c);
   if (resuming) return;
   curves_.open(directory / "deflection_curves.csv");
-  curves_.stream() << "cycle,transverse_load_N,axial_force_N,z_mm,deflection_mm,eq32_ei_max_mm,eq32_ei_min_mm,eq32_ei_min_shear_mm\n";
+  curves_.stream() << "cycle,transverse_load_N,axial_force_N,z_mm,deflection_mm,eq32_ei_max_mm,eq32_ei_min_mm,eq32_ei_min_shear_mm,"
+                      "z_from_load_mm,rise_from_load_mm,eq32_ei_max_rise_mm,eq32_ei_min_rise_mm\n";
   curves_.end_row();
 }
 
@@ -40,23 +56,39 @@ void BendingWriter::on_increment(const StaticAnalysis& analysis, const Increment
   const double length = case_.axial_length;
   const std::vector<int>& core = model.mesh.wires[0].nodes;
   const double stretch = (analysis.state()[core.back()].position.z() - analysis.state()[core.front()].position.z()) / length;
-  std::vector<CurveSample> curve;
-  for (const int node : core) {
+  auto deflection_of = [&](int node) {
     const Vec3 u = analysis.state()[node].position - model.mesh.nodes[node].reference.position;
+    return std::hypot(u.x(), u.y());
+  };
+  auto eq32 = [&](double ei, double x) { return tensioned_beam_deflection(transverse_load, axial_force, ei, length, x); };
+  // From the load point as the paper draws it: the rise of each point below the load point (eq. 3.2 likewise).
+  const double load_z = model.mesh.nodes[load_node_].reference.position.z(), load_x = std::min(load_z, length - load_z);
+  const double load_deflection = deflection_of(load_node_);
+  std::vector<CurveSample> curve;
+  std::vector<DeflectionPoint> points;
+  for (const int node : core) {
     const double z = model.mesh.nodes[node].reference.position.z(), x = std::min(z, length - z);
-    const double deflection = std::hypot(u.x(), u.y());
-    const double ei_max_curve = tensioned_beam_deflection(transverse_load, axial_force, ei_max_, length, x);
-    const double ei_min_curve = tensioned_beam_deflection(transverse_load, axial_force, ei_min_, length, x);
+    const double deflection = deflection_of(node);
+    const double ei_max_curve = eq32(ei_max_, x), ei_min_curve = eq32(ei_min_, x);
     const double ei_min_shear_curve =
         tensioned_timoshenko_deflection(transverse_load, axial_force, stretch * ei_min_, stretch * wire_shear_stiffness_,
                                         stretch * length, stretch * x);
-    curves_.stream() << fmt::format("{},{:.8g},{:.8g},{:.6f},{:.8g},{:.8g},{:.8g},{:.8g}\n", report.origin.cycle, transverse_load,
-                                    axial_force, z, deflection, ei_max_curve, ei_min_curve, ei_min_shear_curve);
+    curves_.stream() << fmt::format("{},{:.8g},{:.8g},{:.6f},{:.8g},{:.8g},{:.8g},{:.8g},{:.6f},{:.8g},{:.8g},{:.8g}\n", report.origin.cycle,
+                                    transverse_load, axial_force, z, deflection, ei_max_curve, ei_min_curve, ei_min_shear_curve,
+                                    z - load_z, load_deflection - deflection, eq32(ei_max_, load_x) - ei_max_curve,
+                                    eq32(ei_min_, load_x) - ei_min_curve);
     curve.push_back({x, deflection, ei_max_curve, std::max(ei_min_curve, ei_min_shear_curve)});
+    points.push_back({z, deflection});
+  }
+  CurveCheckAtPeak check{report.origin.cycle, check_curve_bounds(curve), check_curve_bounds(curve, case_.output.clamp_edge_offset), {}};
+  for (int i = 0; i < kRiseDistances; ++i) {
+    const double d = kRiseDistanceMm[i];
+    const double x = std::max(0.0, load_x - d);  // beyond the clamp the curve is the clamp's
+    check.from_load_point[i] = {d, rise_from_load_point(points, load_z, d), eq32(ei_max_, load_x) - eq32(ei_max_, x),
+                                eq32(ei_min_, load_x) - eq32(ei_min_, x)};
   }
   curves_.end_row();
-  curve_checks_.push_back({report.origin.cycle, check_curve_bounds(curve),
-                           check_curve_bounds(curve, case_.output.clamp_edge_offset)});
+  curve_checks_.push_back(check);
 }
 
 namespace {
@@ -116,10 +148,15 @@ nlohmann::json BendingWriter::finish() {
   file.commit();
   // Eq. 3.2's check at each peak: every interior core node, and those at or beyond the clamp-edge offset.
   nlohmann::json curves = nlohmann::json::array();
-  for (const CurveCheckAtPeak& c : curve_checks_)
+  for (const CurveCheckAtPeak& c : curve_checks_) {
+    nlohmann::json rises = nlohmann::json::array();
+    for (const LoadPointRise& r : c.from_load_point)
+      rises.push_back({{"distance_mm", r.distance}, {"rise_mm", r.rise}, {"eq32_ei_max_mm", r.ei_max_rise}, {"eq32_ei_min_mm", r.ei_min_rise}});
     curves.push_back({{"cycle", c.cycle},
                       {"all_nodes", curve_check_json(c.all_nodes)},
-                      {"beyond_clamp_edge", curve_check_json(c.beyond_clamp_edge)}});
+                      {"beyond_clamp_edge", curve_check_json(c.beyond_clamp_edge)},
+                      {"from_load_point", rises}});
+  }
   return {{"ei_max_Nm2", 1e-6 * ei_max_},  {"ei_min_Nm2", 1e-6 * ei_min_},
           {"loops", rows},                {"steady_tolerance", case_.output.steady_tolerance},
           {"deflection_curves", curves}};

@@ -1,6 +1,7 @@
 // Writes the bending-under-tension results of cyclic strand cases: deflection_curves.csv (core deflection
-// along the strand at each cycle's peak load beside eq. 3.2 for EImax and EImin) and loops.csv (one row per
-// hysteresis loop), and summarizes them for summary.json with the check of each peak's curve against eq. 3.2.
+// along the strand at each cycle's peak load, from the clamp and from the load point, beside eq. 3.2 for EImax
+// and EImin) and loops.csv (one row per hysteresis loop), and summarizes them for summary.json with the check of
+// each peak's curve against eq. 3.2 and its rise from the load point.
 #pragma once
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -34,11 +35,18 @@ class BendingWriter {
   bool active_ = false;
   double ei_max_ = 0, ei_min_ = 0;   // N mm^2 (eqs. 1.1, 1.2)
   double wire_shear_stiffness_ = 0;  // N, for the EImin curve with the wires' shear flexibility
+  int load_node_ = -1;               // core node that carries the transverse load
+  // The curve's rise from the load point at one distance (the paper's Figs. 8, 9a, 15a), beside eq. 3.2's.
+  struct LoadPointRise {
+    double distance = 0, rise = 0, ei_max_rise = 0, ei_min_rise = 0;  // mm
+  };
+  static constexpr int kRiseDistances = 3;
   // Eq. 3.2's bounds against the core's curve at one cycle's peak load.
   struct CurveCheckAtPeak {
     int cycle = 0;
     CurveBoundsCheck all_nodes;          // every node but the clamped ends
     CurveBoundsCheck beyond_clamp_edge;  // nodes at least output.clamp_edge_offset from a clamp
+    LoadPointRise from_load_point[kRiseDistances];
   };
   AppendedFile curves_;
   std::vector<LoadDeflectionPoint> history_;

@@ -15,6 +15,18 @@ double tensioned_beam_deflection(double load, double tension, double bending_sti
   return load * k / (2.0 * tension) * bracket;
 }
 
+double rise_from_load_point(const std::vector<DeflectionPoint>& curve, double load_z, double distance) {
+  auto at = [&](double z) {
+    if (z <= curve.front().z) return curve.front().deflection;
+    if (z >= curve.back().z) return curve.back().deflection;
+    const auto next = std::lower_bound(curve.begin(), curve.end(), z, [](const DeflectionPoint& p, double v) { return p.z < v; });
+    const auto prev = next - 1;
+    const double t = (z - prev->z) / (next->z - prev->z);
+    return (1 - t) * prev->deflection + t * next->deflection;
+  };
+  return at(load_z) - 0.5 * (at(load_z - distance) + at(load_z + distance));
+}
+
 double tensioned_timoshenko_deflection(double load, double tension, double bending_stiffness, double shear_stiffness,
                                        double span, double x) {
   const double reduction = 1.0 - tension / shear_stiffness;

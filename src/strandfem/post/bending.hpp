@@ -50,6 +50,17 @@ struct CurveBoundsCheck {
 };
 CurveBoundsCheck check_curve_bounds(const std::vector<CurveSample>& curve, double from_clamp = 0);
 
+// A point of the core's deflection curve: reference z (mm) and deflection (mm).
+struct DeflectionPoint {
+  double z = 0;
+  double deflection = 0;
+};
+
+// The rise of a deflection curve over `distance` mm from the load point, as the paper's Figs. 8, 9a and 15a draw
+// it: the deflection at load_z minus the mean of the deflections at load_z -/+ distance, linear between points
+// (sorted by z); a side beyond the curve's ends takes the end point.
+double rise_from_load_point(const std::vector<DeflectionPoint>& curve, double load_z, double distance);
+
 // One converged state of a cyclic transverse load: load V and midspan deflection y.
 struct LoadDeflectionPoint {
   int cycle = 0;          // 1-based cycle of the load protocol
