@@ -159,5 +159,29 @@ TEST(BendingProgram, CoreAloneFollowsTheShearFormOnTheStretchedSpan) {
   }
 }
 
+// Clamps and a saddle are rigid over their lengths: the bar bends only between their edges, as the same tensioned
+// Timoshenko beam on the 120 mm (stretched) between them, and the saddle's nodes all move with the load point;
+// deflection_curves.csv's references are eq. 3.2 on that span.
+TEST(BendingProgram, ClampsAndSaddleHoldTheirLengthsRigid) {
+  const ProgramRun run = run_case("cases/verification/tensioned_core_saddle.yaml", "tensioned_core_saddle");
+  ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
+  const ThickBar bar;
+  const double clamp = 20, saddle = 40, span = bar.L - 2 * clamp - saddle, s = bar.stretch();
+  auto expected = [&](double z) {
+    const double x = std::clamp(std::min(z, bar.L - z) - clamp, 0.0, 0.5 * span);
+    return tensioned_timoshenko_deflection(bar.V, bar.T, bar.E * bar.inertia() * s, bar.shear_stiffness() * s, span * s, x * s);
+  };
+  const double midspan = expected(0.5 * bar.L);
+  EXPECT_LT(midspan, 0.5 * bar.deflection(0.5 * bar.L));  // far stiffer than the bar loaded at its core node
+  const auto curve = read_csv(run.output / "results" / "deflection_curves.csv");
+  ASSERT_EQ(curve.size(), 81u);
+  for (const auto& row : curve) {
+    EXPECT_NEAR(row.at("deflection_mm"), expected(row.at("z_mm")), 1e-5 * midspan) << "z = " << row.at("z_mm");
+    // eq. 3.2's references take the same span: the bent one, between the clamps' and the saddle's edges.
+    EXPECT_NEAR(row.at("eq32_ei_min_shear_mm"), expected(row.at("z_mm")), 1e-5 * midspan) << "z = " << row.at("z_mm");
+    if (std::abs(row.at("z_from_load_mm")) <= 0.5 * saddle) EXPECT_NEAR(row.at("rise_from_load_mm"), 0.0, 1e-9 * midspan);
+  }
+}
+
 }  // namespace
 }  // namespace strandfem::verification

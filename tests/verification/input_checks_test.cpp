@@ -94,6 +94,21 @@ TEST(InputChecks, ClampEdgeOffsetIsADistanceWithinHalfTheStrand) {
   });
 }
 
+// Clamps are shorter than half the strand, and a saddle needs its length, lies between the clamps and comes only
+// with through: saddle.
+TEST(InputChecks, ClampAndSaddleLengthsFitTheStrand) {
+  const char* const saddle = "cases/verification/tensioned_core_saddle.yaml";
+  const std::string loaded = "through: saddle, saddle_length: 40";
+  expect_exit_2({
+      {"clamp_half", saddle, {{"clamp_length: 20", "clamp_length: 100"}}, {"strand.clamp_length", "less than half"}},
+      {"clamp_negative", saddle, {{"clamp_length: 20", "clamp_length: -1"}}, {"strand.clamp_length", ">= 0"}},
+      {"saddle_missing", saddle, {{loaded, "through: saddle"}}, {"saddle_length"}},
+      {"saddle_alone", saddle, {{loaded, "saddle_length: 40"}}, {"saddle_length", "only with through: saddle"}},
+      {"saddle_long", saddle, {{loaded, "through: saddle, saddle_length: 160"}}, {"saddle_length", "reaches the clamps"}},
+      {"saddle_zero", saddle, {{loaded, "through: saddle, saddle_length: 0"}}, {"saddle_length"}},
+  });
+}
+
 // The steadiness tolerance of the loops is a fraction: 0.02 means 2 %, not 2.
 TEST(InputChecks, SteadyToleranceIsAFractionBelowOne) {
   expect_exit_2({

@@ -37,6 +37,19 @@ void add_rigid_section(const Mesh& m, int core_node, std::vector<RigidTie>& ties
   }
 }
 
+void add_rigid_block(const Mesh& m, int master, double z_min, double z_max, std::vector<RigidTie>& ties) {
+  std::vector<char> taken(m.nodes.size(), 0);
+  taken[master] = 1;
+  for (const RigidTie& t : ties) taken[t.slave] = taken[t.master] = 1;
+  for (const MeshWire& wire : m.wires)
+    for (const int n : wire.nodes) {
+      const double z = m.nodes[n].reference.position.z();
+      if (taken[n] || z < z_min || z > z_max) continue;
+      ties.push_back(make_rigid_tie(n, master, m.nodes[n].reference, m.nodes[master].reference));
+      taken[n] = 1;
+    }
+}
+
 NodalAction axial_strain_action(const StrandModelParts& s, double axial_strain, double length) {
   return {NodalAction::kMotion, s.end_node, kUz, axial_strain * length};
 }

@@ -31,6 +31,10 @@ StrandModelParts build_strand_model(const StrandSpec& strand, const MeshSpec& me
 // wires whose node there is already tied keep their tie.
 void add_rigid_section(const Mesh& mesh, int core_node, std::vector<RigidTie>& ties);
 
+// Ties every node of every wire with reference z in [z_min, z_max] rigidly to `master` (a saddle or a clamp
+// holding the strand over a length); nodes already tied, and masters of other ties, keep their role.
+void add_rigid_block(const Mesh& mesh, int master, double z_min, double z_max, std::vector<RigidTie>& ties);
+
 // A transverse load on the strand: `value` N along `direction` (unit, perpendicular to z) at `node`.
 struct TransverseLoad {
   int node = -1;

@@ -53,26 +53,27 @@ void BendingWriter::on_increment(const StaticAnalysis& analysis, const Increment
   // taken on the span as the tension stretched it: the sections' laws are per reference length, so on the current
   // length they act as EI and S times the stretch (docs/theory.md, "Deflection references with shear").
   const Model& model = analysis.model();
-  const double length = case_.axial_length;
+  const double length = case_.axial_length, span = bent_span();
   const std::vector<int>& core = model.mesh.wires[0].nodes;
-  const double stretch = (analysis.state()[core.back()].position.z() - analysis.state()[core.front()].position.z()) / length;
+  const double current_length = analysis.state()[core.back()].position.z() - analysis.state()[core.front()].position.z();
+  const double stretch = (current_length - (length - span)) / span;  // of the bent span: clamps and saddle stay rigid
   auto deflection_of = [&](int node) {
     const Vec3 u = analysis.state()[node].position - model.mesh.nodes[node].reference.position;
     return std::hypot(u.x(), u.y());
   };
-  auto eq32 = [&](double ei, double x) { return tensioned_beam_deflection(transverse_load, axial_force, ei, length, x); };
+  auto eq32 = [&](double ei, double x) { return tensioned_beam_deflection(transverse_load, axial_force, ei, span, x); };
   // From the load point as the paper draws it: the rise of each point below the load point (eq. 3.2 likewise).
-  const double load_z = model.mesh.nodes[load_node_].reference.position.z(), load_x = std::min(load_z, length - load_z);
+  const double load_z = model.mesh.nodes[load_node_].reference.position.z(), load_x = bent_x(load_z);
   const double load_deflection = deflection_of(load_node_);
   std::vector<CurveSample> curve;
   std::vector<DeflectionPoint> points;
   for (const int node : core) {
-    const double z = model.mesh.nodes[node].reference.position.z(), x = std::min(z, length - z);
+    const double z = model.mesh.nodes[node].reference.position.z(), x = bent_x(z);
     const double deflection = deflection_of(node);
     const double ei_max_curve = eq32(ei_max_, x), ei_min_curve = eq32(ei_min_, x);
     const double ei_min_shear_curve =
         tensioned_timoshenko_deflection(transverse_load, axial_force, stretch * ei_min_, stretch * wire_shear_stiffness_,
-                                        stretch * length, stretch * x);
+                                        stretch * span, stretch * x);
     curves_.stream() << fmt::format("{},{:.8g},{:.8g},{:.6f},{:.8g},{:.8g},{:.8g},{:.8g},{:.6f},{:.8g},{:.8g},{:.8g}\n", report.origin.cycle,
                                     transverse_load, axial_force, z, deflection, ei_max_curve, ei_min_curve, ei_min_shear_curve,
                                     z - load_z, load_deflection - deflection, eq32(ei_max_, load_x) - ei_max_curve,
@@ -83,12 +84,19 @@ void BendingWriter::on_increment(const StaticAnalysis& analysis, const Increment
   CurveCheckAtPeak check{report.origin.cycle, check_curve_bounds(curve), check_curve_bounds(curve, case_.output.clamp_edge_offset), {}};
   for (int i = 0; i < kRiseDistances; ++i) {
     const double d = kRiseDistanceMm[i];
-    const double x = std::max(0.0, load_x - d);  // beyond the clamp the curve is the clamp's
+    const double x = bent_x(load_z - d);
     check.from_load_point[i] = {d, rise_from_load_point(points, load_z, d), eq32(ei_max_, load_x) - eq32(ei_max_, x),
                                 eq32(ei_min_, load_x) - eq32(ei_min_, x)};
   }
   curves_.end_row();
   curve_checks_.push_back(check);
+}
+
+double BendingWriter::bent_span() const { return case_.axial_length - 2 * case_.clamp_length - case_.saddle_length; }
+
+double BendingWriter::bent_x(double z) const {
+  const double from_clamp = std::min(z, case_.axial_length - z);
+  return std::clamp(from_clamp - case_.clamp_length, 0.0, 0.5 * bent_span());
 }
 
 namespace {
@@ -114,7 +122,7 @@ nlohmann::json BendingWriter::finish() {
          "secant_stiffness_N_per_mm,secant_ei_Nm2,loading_tangent_N_per_mm,unloading_tangent_N_per_mm,eq31_ei_max_mm,eq31_ei_min_mm,steady,"
          "area_change,friction_dissipation_change,peak_deflection_change,return_loop_area_Nmm,return_loop_friction_dissipation_Nmm\n";
   nlohmann::json rows = nlohmann::json::array();
-  const double length = case_.axial_length;
+  const double length = bent_span();
   for (std::size_t i = 0; i < loops.size(); ++i) {
     const HysteresisLoop& l = loops[i];
     const double tension = l.peak_tension;

@@ -30,6 +30,11 @@ class BendingWriter {
   void restore_state(ArchiveReader& in);
 
  private:
+  // Eqs. 3.1 and 3.2 on the span that bends: the strand less its clamps and its saddle (rigid), and a node's
+  // distance x along it from the nearer clamp's edge (0 within a clamp, half the span within the saddle).
+  double bent_span() const;
+  double bent_x(double z) const;
+
   std::filesystem::path directory_;
   const CaseDefinition& case_;
   bool active_ = false;

@@ -107,7 +107,7 @@ class CaseParser {
   }
 
   void parse_strand(const YAML::Node& node, const YAML::Node& mesh) {
-    reader_.check_keys(node, "strand", {"length", "layers", "ends"});
+    reader_.check_keys(node, "strand", {"length", "layers", "ends", "clamp_length"});
     StrandSpec spec;
     spec.materials = materials_;
     spec.length = reader_.positive(reader_.require(node, "strand", "length"), "strand.length", "mm");
@@ -173,6 +173,15 @@ class CaseParser {
     strand_ = build_strand_model(spec, out_.mesh_spec, out_.end_type == "free");
     out_.model.mesh = std::move(strand_.mesh);
     out_.model.ties = std::move(strand_.ties);
+    if (node["clamp_length"]) {
+      const double c = reader_.non_negative(node["clamp_length"], "strand.clamp_length", "mm");
+      if (!(c < 0.5 * spec.length)) reader_.fail(node["clamp_length"], "strand.clamp_length", "expected less than half the strand length");
+      if (c > 0) {
+        add_rigid_block(out_.model.mesh, strand_.start_node, -1.0, c, out_.model.ties);
+        add_rigid_block(out_.model.mesh, strand_.end_node, spec.length - c, spec.length + 1.0, out_.model.ties);
+      }
+      out_.clamp_length = c;
+    }
     out_.model.supports = std::move(strand_.supports);
     check_resolution(0, mesh_node, mesh_path);
     out_.start_node = strand_.start_node;

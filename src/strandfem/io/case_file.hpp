@@ -40,6 +40,8 @@ struct CaseDefinition {
   int end_node = -1;
   int monitor_node = -1;              // strand: core node nearest mid-length
   double axial_length = 0;            // strand length (for the axial strain)
+  double clamp_length = 0;            // strand: length held rigid at each end (strand.clamp_length)
+  double saddle_length = 0;           // strand: length held rigid under a transverse load (through: saddle)
   std::vector<std::string> warnings;  // e.g. nominal overlaps of neighbouring wires
   nlohmann::json resolved;            // the fully resolved configuration, written with the results
 };

@@ -105,15 +105,26 @@ void LoadKeys::parse_strand_actions(const YAML::Node& s, const std::string& path
   if (s["transverse_force"]) {
     const YAML::Node t = s["transverse_force"];
     const std::string tp = path + ".transverse_force";
-    reader_.check_keys(t, tp, {"value", "z", "direction", "through"});
+    reader_.check_keys(t, tp, {"value", "z", "direction", "through", "saddle_length"});
     const double value = reader_.number(reader_.require(t, tp, "value"), tp + ".value");
     YAML::Node selector;
     selector["core_z"] = reader_.require(t, tp, "z");
     TransverseLoad load{node_at_(selector, tp), value, Vec3::UnitY()};
     // through: core (the load acts on the core node alone and reaches the other layers through contact) or
     // section (every wire's node at that z is tied rigidly to the core node, like a loading clamp).
-    if (t["through"] && reader_.choice(t["through"], tp + ".through", {"core", "section"}) == "section")
-      add_rigid_section(out_.model.mesh, load.node, out_.model.ties);
+    const std::string through = t["through"] ? reader_.choice(t["through"], tp + ".through", {"core", "section", "saddle"}) : "core";
+    if (through == "section") add_rigid_section(out_.model.mesh, load.node, out_.model.ties);
+    if (t["saddle_length"] && through != "saddle") reader_.fail(t["saddle_length"], tp + ".saddle_length", "only with through: saddle");
+    if (through == "saddle") {
+      const double saddle = reader_.positive(reader_.require(t, tp, "saddle_length"), tp + ".saddle_length", "mm");
+      const double z = out_.model.mesh.nodes[load.node].reference.position.z();
+      if (z - 0.5 * saddle <= out_.clamp_length || z + 0.5 * saddle >= out_.axial_length - out_.clamp_length)
+        reader_.fail(t["saddle_length"], tp + ".saddle_length", "the saddle reaches the clamps: expected it to lie between them");
+      if (out_.saddle_length > 0 && out_.saddle_length != saddle)
+        reader_.fail(t["saddle_length"], tp + ".saddle_length", "one saddle per strand: every step's must be the same");
+      add_rigid_block(out_.model.mesh, load.node, z - 0.5 * saddle, z + 0.5 * saddle, out_.model.ties);
+      out_.saddle_length = saddle;
+    }
     if (t["direction"]) {
       const auto d = reader_.numbers(t["direction"], tp + ".direction", 3);
       load.direction = Vec3(d[0], d[1], d[2]);
