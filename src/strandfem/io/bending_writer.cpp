@@ -48,10 +48,13 @@ void BendingWriter::on_increment(const StaticAnalysis& analysis, const Increment
   // loops.csv is rewritten whenever a cycle closes, so that a long run shows its loops before it ends or stops.
   if (report.origin.cycle > 0 && report.origin.returning && ramp_end) finish();
   const bool peak = report.origin.cycle > 0 && !report.origin.returning && ramp_end;
-  if (!peak) return;
-  // The core's transverse deflection along the strand beside eq. 3.2 (x from the nearer clamp). The shear form is
-  // taken on the span as the tension stretched it: the sections' laws are per reference length, so on the current
-  // length they act as EI and S times the stretch (docs/theory.md, "Deflection references with shear").
+  if (peak) record_peak_curve(analysis, report.origin.cycle, axial_force, transverse_load);
+}
+
+void BendingWriter::record_peak_curve(const StaticAnalysis& analysis, int cycle, double axial_force, double transverse_load) {
+  // The core's transverse deflection along the strand beside eq. 3.2 (x from the nearer clamp's edge). The shear
+  // form is taken on the span as the tension stretched it: the sections' laws are per reference length, so on the
+  // current length they act as EI and S times the stretch (docs/theory.md, "Deflection references with shear").
   const Model& model = analysis.model();
   const double length = case_.axial_length, span = bent_span();
   const std::vector<int>& core = model.mesh.wires[0].nodes;
@@ -74,14 +77,14 @@ void BendingWriter::on_increment(const StaticAnalysis& analysis, const Increment
     const double ei_min_shear_curve =
         tensioned_timoshenko_deflection(transverse_load, axial_force, stretch * ei_min_, stretch * wire_shear_stiffness_,
                                         stretch * span, stretch * x);
-    curves_.stream() << fmt::format("{},{:.8g},{:.8g},{:.6f},{:.8g},{:.8g},{:.8g},{:.8g},{:.6f},{:.8g},{:.8g},{:.8g}\n", report.origin.cycle,
+    curves_.stream() << fmt::format("{},{:.8g},{:.8g},{:.6f},{:.8g},{:.8g},{:.8g},{:.8g},{:.6f},{:.8g},{:.8g},{:.8g}\n", cycle,
                                     transverse_load, axial_force, z, deflection, ei_max_curve, ei_min_curve, ei_min_shear_curve,
                                     z - load_z, load_deflection - deflection, eq32(ei_max_, load_x) - ei_max_curve,
                                     eq32(ei_min_, load_x) - ei_min_curve);
     curve.push_back({x, deflection, ei_max_curve, std::max(ei_min_curve, ei_min_shear_curve)});
     points.push_back({z, deflection});
   }
-  CurveCheckAtPeak check{report.origin.cycle, check_curve_bounds(curve), check_curve_bounds(curve, case_.output.clamp_edge_offset), {}};
+  CurveCheckAtPeak check{cycle, check_curve_bounds(curve), check_curve_bounds(curve, case_.output.clamp_edge_offset), {}};
   for (int i = 0; i < kRiseDistances; ++i) {
     const double d = kRiseDistanceMm[i];
     const double x = bent_x(load_z - d);

@@ -30,6 +30,8 @@ class BendingWriter {
   void restore_state(ArchiveReader& in);
 
  private:
+  // deflection_curves.csv's rows and summary.json's checks of the core's curve at a cycle's peak load.
+  void record_peak_curve(const StaticAnalysis& analysis, int cycle, double axial_force, double transverse_load);
   // Eqs. 3.1 and 3.2 on the span that bends: the strand less its clamps and its saddle (rigid), and a node's
   // distance x along it from the nearer clamp's edge (0 within a clamp, half the span within the saddle).
   double bent_span() const;
