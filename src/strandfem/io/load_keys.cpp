@@ -110,8 +110,8 @@ void LoadKeys::parse_strand_actions(const YAML::Node& s, const std::string& path
     YAML::Node selector;
     selector["core_z"] = reader_.require(t, tp, "z");
     TransverseLoad load{node_at_(selector, tp), value, Vec3::UnitY()};
-    // through: core (the load acts on the core node alone and reaches the other layers through contact) or
-    // section (every wire's node at that z is tied rigidly to the core node, like a loading clamp).
+    // through: core (the load acts on the core node alone and reaches the other layers through contact), section
+    // (every wire's node at that z is tied rigidly to the core node) or saddle (every node within saddle_length).
     const std::string through = t["through"] ? reader_.choice(t["through"], tp + ".through", {"core", "section", "saddle"}) : "core";
     if (through == "section") add_rigid_section(out_.model.mesh, load.node, out_.model.ties);
     if (t["saddle_length"] && through != "saddle") reader_.fail(t["saddle_length"], tp + ".saddle_length", "only with through: saddle");
