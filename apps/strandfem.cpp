@@ -1,5 +1,6 @@
 // strandfem: command-line front end (run a case, or print its model sizes and analytic references).
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -18,7 +19,9 @@
 #include "strandfem/io/case_run.hpp"
 #include "strandfem/io/case_variant.hpp"
 #include "strandfem/io/output_file.hpp"
+#include "strandfem/analysis/load_protocol.hpp"
 #include "strandfem/post/model_report.hpp"
+#include "strandfem/post/run_report.hpp"
 #include "strandfem/solver/blas_kernels.hpp"
 #include "strandfem/solver/mumps_processes.hpp"
 
@@ -66,10 +69,54 @@ std::string increment_size_note(const strandfem::IncrementReport& r) {
   return note + searched;
 }
 
+// How far a run is through its load protocol, in nominal increments, and an estimate of the time left from the
+// pace since the first increment this invocation converged.
+class RunProgress {
+ public:
+  explicit RunProgress(const std::vector<strandfem::LoadStep>& steps) {
+    for (const strandfem::LoadRamp& ramp : strandfem::expand_load_steps(steps)) {
+      ramp_start_.push_back(total_);
+      ramp_size_.push_back(ramp.increments);
+      total_ += ramp.increments;
+    }
+  }
+  std::string note(const strandfem::IncrementReport& r) {
+    const auto now = std::chrono::steady_clock::now();
+    const std::size_t k = static_cast<std::size_t>(r.step);
+    const double done = k < ramp_size_.size() && total_ > 0 ? (ramp_start_[k] + r.step_fraction * ramp_size_[k]) / total_ : 1.0;
+    if (!first_) {
+      first_ = true;
+      first_done_ = done;
+      first_time_ = now;
+    }
+    std::string text = fmt::format("; {:.0f} % of the run", 100 * done);
+    const double seconds = std::chrono::duration<double>(now - first_time_).count();
+    if (done > first_done_ && done < 1) {
+      const double left = seconds * (1 - done) / (done - first_done_);
+      text += left < 90 ? fmt::format(", about {:.0f} s left", left) : fmt::format(", about {:.0f} min left", left / 60);
+    }
+    return text;
+  }
+
+ private:
+  std::vector<double> ramp_start_, ramp_size_;
+  double total_ = 0, first_done_ = 0;
+  bool first_ = false;
+  std::chrono::steady_clock::time_point first_time_;
+};
+
 void draw_plots(const std::string& output_dir) {
   const std::string command = std::string("/usr/bin/python3 '") + STRANDFEM_SCRIPTS_DIR + "/plot_bending.py' '" +
                               output_dir + "' > /dev/null";
   if (std::system(command.c_str()) != 0) std::cerr << "warning: plotting failed (" << command << ")\n";
+}
+
+// The end-of-run report on stdout, from the summary.json the run has just written.
+void print_report(const std::string& output_dir) {
+  std::ifstream in(std::filesystem::path(output_dir) / "summary.json");
+  const nlohmann::json summary = nlohmann::json::parse(in, nullptr, false);
+  if (summary.is_discarded()) return;
+  std::cout << strandfem::end_of_run_report(summary) << "results in " << output_dir << "\n";
 }
 
 int run_case_file(const std::string& case_path, const std::string& output_dir, int threads, bool quiet, bool verbose,
@@ -94,11 +141,11 @@ int run_case_file(const std::string& case_path, const std::string& output_dir, i
   options.on_resume = [&](int increments) {
     if (!quiet) std::cerr << "resuming after increment " << increments << " from " << output_dir << "\n";
   };
+  RunProgress progress(c.model.steps);
   options.on_increment = [&](const strandfem::IncrementReport& r) {
     if (!quiet)
-      std::cerr << "step " << r.origin.step + 1 << "/" << step_count << " '" << r.step_name << "' increment " << r.increment
-                << " (fraction " << r.step_fraction << increment_size_note(r) << "): " << r.iterations
-                << " iterations, residual " << r.residual_norm << "\n";
+      std::cerr << "step " << r.origin.step + 1 << "/" << step_count << " '" << r.step_name << "' increment " << r.increment << " (fraction " << r.step_fraction << increment_size_note(r) << "): " << r.iterations
+                << " iterations, residual " << r.residual_norm << progress.note(r) << "\n";
   };
   if (verbose)
     options.on_progress = [&](const strandfem::IncrementReport& r) {
@@ -112,11 +159,11 @@ int run_case_file(const std::string& case_path, const std::string& output_dir, i
     return kExitStopped;
   }
   if (plots) draw_plots(output_dir);
+  if (!quiet) print_report(output_dir);
   if (!result.status.converged) {
     std::cerr << "error: " << result.status.message << "\nconverged results so far are in " << output_dir << "\n";
     return kExitNotConverged;
   }
-  if (!quiet) std::cerr << "done in " << result.wall_seconds << " s; results in " << output_dir << "\n";
   return 0;
 }
 

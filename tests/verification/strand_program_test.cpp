@@ -5,6 +5,9 @@
 
 #include <cmath>
 #include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "program_runner.hpp"
@@ -135,6 +138,55 @@ TEST(StrandProgram, ProgressLinesReportCutBacks) {
   EXPECT_NE(r.stderr_text.find("increment 1 (fraction 0.166667, 1/2 of the nominal increment after 1 cut-back, with line search)"),
             std::string::npos) << r.stderr_text;
   EXPECT_NE(r.stderr_text.find("(fraction 0.333333, 1/2 of the nominal increment)"), std::string::npos) << r.stderr_text;
+}
+
+std::string read_text(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// The end-of-run report on stdout gives what summary.json measured: for a pulled strand the secant slope beside
+// the fixed-end theory (Costello, within 0.5 % for Table 1's strand); -q silences it.
+TEST(StrandProgram, EndOfRunReportGivesTheAxialSlopeBesideTheTheory) {
+  const std::string out = ::testing::TempDir() + "/report_axial_out";
+  const ProgramRun r = run_program("run " + case_path("cases/paper/seven_wire_fixed.yaml") + " -o " + out, "report_axial");
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  const nlohmann::json summary = nlohmann::json::parse(std::ifstream(std::filesystem::path(out) / "summary.json"));
+  const auto history = read_csv(std::filesystem::path(out) / "history.csv");
+  const nlohmann::json& axial = summary["axial"];
+  const double secant = history.back().at("axial_force_N") / history.back().at("axial_strain");
+  EXPECT_NEAR(axial["secant_stiffness_N"].get<double>(), secant, 1e-6 * secant);
+  const double costello = summary["axial_stiffness_N"]["fixed_ends"].get<double>();
+  EXPECT_EQ(axial["theory_ends"], "fixed");
+  EXPECT_NEAR(axial["relative_to_theory"].get<double>(), secant / costello - 1, 1e-7);  // history.csv rounds
+  EXPECT_LT(std::abs(secant / costello - 1), 0.005);
+  const std::string stdout_text = read_text(r.output / "stdout.txt");
+  const std::string slope = fmt::format("secant slope {:.5g} MN against {:.5g} MN of the linear theory for fixed ends", 1e-6 * secant,
+                                        1e-6 * costello);
+  EXPECT_NE(stdout_text.find(slope), std::string::npos) << stdout_text;
+  EXPECT_NE(stdout_text.find("results in " + out), std::string::npos) << stdout_text;
+  const ProgramRun quiet = run_program("run " + case_path("cases/paper/seven_wire_fixed.yaml") + " -q -o " + out, "report_quiet");
+  ASSERT_EQ(quiet.exit_code, 0) << quiet.stderr_text;
+  EXPECT_EQ(read_text(quiet.output / "stdout.txt"), "");
+}
+
+// For a bent strand the report gives each cycle's peak beside eq. 3.1's bounds, as loops.csv has them.
+TEST(StrandProgram, EndOfRunReportGivesEachCyclesPeakBesideEq31) {
+  const std::string out = ::testing::TempDir() + "/report_bending_out";
+  const ProgramRun r = run_program("run " + case_path("cases/verification/bending_cycles_frictionless.yaml") + " -o " + out, "report_bending");
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  const auto loops = read_csv(std::filesystem::path(out) / "loops.csv");
+  ASSERT_EQ(loops.size(), 1u);
+  const std::string peak = fmt::format("cycle 1: peak {:.4g} mm at {:.5g} N (eq. 3.1: {:.4g} mm with EImax, {:.4g} mm with EImin)",
+                                       loops[0].at("peak_deflection_mm"), loops[0].at("peak_load_N"), loops[0].at("eq31_ei_max_mm"),
+                                       loops[0].at("eq31_ei_min_mm"));
+  const std::string stdout_text = read_text(r.output / "stdout.txt");
+  EXPECT_NE(stdout_text.find(peak), std::string::npos) << stdout_text;
+  EXPECT_EQ(stdout_text.find("axial:"), std::string::npos) << stdout_text;
+  // The progress lines say how far through the protocol each increment is.
+  EXPECT_NE(r.stderr_text.find("; 100 % of the run"), std::string::npos) << r.stderr_text;
 }
 
 TEST(NewtonConvergence, ResidualDecreasesQuadratically) {

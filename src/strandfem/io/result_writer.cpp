@@ -19,6 +19,22 @@ Vec3 rotation(const StaticAnalysis& a, int node) {
   return rotation_vector_from_quaternion(a.state()[node].rotation * a.model().mesh.nodes[node].reference.rotation.conjugate());
 }
 
+// The strand's axial response at the last converged increment beside the linear theory for its ends.
+nlohmann::json axial_result(const HistoryRow& last, const nlohmann::json& model_info, const std::string& ends) {
+  nlohmann::json axial = {{"axial_strain", last.axial_strain},
+                          {"axial_force_N", last.axial_force},
+                          {"torque_Nmm", last.torque},
+                          {"end_rotation_rad", last.end_rotation}};
+  if (!(std::abs(last.axial_strain) > 1e-12) || !model_info.contains("axial_stiffness_N")) return axial;
+  const double secant = last.axial_force / last.axial_strain;
+  const double theory = model_info["axial_stiffness_N"][ends == "free" ? "free_ends" : "fixed_ends"].get<double>();
+  axial["secant_stiffness_N"] = secant;
+  axial["theory_stiffness_N"] = theory;
+  axial["theory_ends"] = ends;
+  axial["relative_to_theory"] = secant / theory - 1.0;
+  return axial;
+}
+
 }  // namespace
 
 HistoryRow history_row(const CaseDefinition& c, const StaticAnalysis& analysis, const IncrementReport& report) {
@@ -167,6 +183,7 @@ nlohmann::json ResultWriter::run_summary(const StaticAnalysis& analysis, double 
                        {"stabilization_fraction",
                         energy.external_work > 0 ? energy.stabilization_energy / energy.external_work : 0.0}};
   summary["contacts"] = ContactWriter::summary(analysis);
+  if (case_.strand && !rows_.empty()) summary["axial"] = axial_result(rows_.back(), model_info_, case_.end_type);
   if (bending_.active()) {
     summary["bending"] = bending_.finish();
     summary["bending"]["profiles"] = profiles_.summary();
