@@ -39,7 +39,7 @@ constexpr int kExitStopped = 5;
 
 nlohmann::json build_info() {
   return {{"git_revision", STRANDFEM_GIT_REVISION}, {"compiler", __VERSION__}, {"instruction_set", STRANDFEM_INSTRUCTION_SET},
-          {"version", "0.1.0"}};
+          {"version", STRANDFEM_VERSION}};
 }
 
 // Threads for element evaluation: -t over solver.threads, 0 meaning OpenMP's default. More than the machine's
@@ -240,9 +240,13 @@ int run_sweep(const std::vector<std::string>& cases, const std::string& key, con
   }
   const std::string table = (fs::path(output_dir) / "sweep.csv").string();
   std::ofstream csv(table);
-  csv << "variant,key,value,case_file,results,exit_code\n";
-  for (const Variant& v : variants)
-    csv << v.name << "," << key << "," << v.value << "," << v.case_file << "," << v.name << "," << v.exit_code << "\n";
+  csv << "variant,key,value,case_file,results,exit_code," << strandfem::sweep_result_header() << "\n";
+  for (const Variant& v : variants) {
+    std::ifstream in(fs::path(output_dir) / v.name / "summary.json");
+    const nlohmann::json summary = nlohmann::json::parse(in, nullptr, false);
+    csv << v.name << "," << key << "," << v.value << "," << v.case_file << "," << v.name << "," << v.exit_code << ","
+        << strandfem::sweep_result_fields(summary.is_discarded() ? nlohmann::json::object() : summary) << "\n";
+  }
   if (!csv) throw strandfem::OutputError("cannot write " + table);
   csv.close();
   const std::string command = std::string("/usr/bin/python3 '") + STRANDFEM_SCRIPTS_DIR + "/plot_sweep.py' '" + output_dir + "' > /dev/null";
@@ -265,8 +269,8 @@ void use_faster_blas_kernels(char** argv) {
 
 // MUMPS allocates its fronts and factors (hundreds of MB for a strand's tangent) at every factorization and frees
 // them after it. glibc serves blocks that large with mmap and gives them back with munmap, so every factorization
-// faulted in and zeroed all of that memory again: 1.9 million page faults over S32 case 4's first 26 increments,
-// a quarter of the CPU time in the kernel (docs/performance.md, session 37). From the heap, and never trimmed back,
+// would fault in and zero all of that memory again, a quarter of a 1 m bending run's CPU time in the kernel
+// (docs/performance.md, "Memory"). From the heap, and never trimmed back,
 // the same memory serves the next factorization; the price is that the resident size stays at its peak.
 void keep_freed_memory() {
   mallopt(M_MMAP_MAX, 0);            // no block of its own mapping: everything from the heap
@@ -283,6 +287,7 @@ int main(int argc, char** argv) {
   strandfem::MumpsProcesses processes(argc, argv);
   if (processes.rank() > 0) return processes.serve();
   CLI::App app{"StrandFEM: finite elements for multilayered helical wire strands"};
+  app.set_version_flag("--version", STRANDFEM_VERSION);
   app.require_subcommand(1);
   std::string case_path, output_dir = "results";
   int threads = 0, stop_after = 0, dump_tangent = 0;
@@ -295,10 +300,10 @@ int main(int argc, char** argv) {
   run->add_flag("-v,--verbose", verbose, "A progress line per Newton iteration");
   run->add_flag("--resume", resume, "Continue the run in the results folder from its last converged increment (its checkpoint.bin)");
   run->add_option("--stop-after", stop_after,
-                  "Stop after this many converged increments (of this session), exit code 5; --resume continues")
+                  "Stop after this many converged increments (of this invocation), exit code 5; --resume continues")
       ->check(CLI::Range(1, 1000000000));  // PositiveNumber's message prints the double's range, 300 digits
   run->add_option("--dump-tangent", dump_tangent,
-                  "Write the tangent of this session's K-th factorization to OUTPUT/tangent_K.bin (for bench/tangent_bench)")
+                  "Write the tangent of this invocation's K-th factorization to OUTPUT/tangent_K.bin (for bench/tangent_bench)")
       ->check(CLI::Range(1, 1000000000));
   run->add_flag("--plots", plots, "Draw the results' figures (PNG, into the results folder; needs python3-matplotlib)");
   std::vector<std::string> sweep_cases, sweep_values, sweep_settings;

@@ -60,7 +60,7 @@ void expect_friction_loop(const std::map<std::string, double>& loop, const std::
   EXPECT_LE(loop.at("friction_dissipation_Nmm"), loop.at("area_Nmm")) << name;
 }
 
-// Measured (session 22): secant EI 105.9, 154.8, 206.5 N m^2, loop areas 75.9, 34.3, 13.8 N mm and friction
+// Measured: secant EI 105.9, 154.8, 206.5 N m^2, loop areas 75.9, 34.3, 13.8 N mm and friction
 // dissipation 61.4, 25.2, 10.4 N mm for mu 0.2, 0.4, 0.8.
 TEST(FrictionTrends, HigherFrictionStiffensTheStrandAndShrinksTheLoop) {
   const auto folder = sweep("contact.friction", "0.2,0.4,0.8", "trend_friction");
@@ -91,7 +91,7 @@ TEST(FrictionTrends, OrthotropicFrictionShrinksTheLoop) {
 }
 
 // contact.friction_direction: at mu2/mu1 = 5 (mu1 0.2, every contact orthotropic), direction 1 along the slave wire
-// instead of the strand axis. Measured (session 48): loops 72.81 against 67.16 N mm (75.9 isotropic), friction's
+// instead of the strand axis. Measured: loops 72.81 against 67.16 N mm (75.9 isotropic), friction's
 // work 59.02 against 54.47, secant EI 111.8 against 111.5 N m^2: the reading changes the loop by 8 %, and both
 // still bend between eq. 3.1's bounds. The summary says which reading ran.
 TEST(FrictionTrends, FrictionDirectionAlongTheSlaveWireIsAnotherReading) {
@@ -135,7 +135,7 @@ TEST(FrictionTrends, RepeatedCyclesAreFrictionsWorkAndSteady) {
     // The paper's presentation (the previous return half and this loading half, peak to peak) carries no set of
     // the first loading either. It is friction's work between the peaks plus the change of the energy stored
     // between them, which fades as the cycles shake down: 17.26 against 19.31 N mm from peak 1 to 2, 17.66
-    // against 18.49 from peak 2 to 3 (session 51).
+    // against 18.49 from peak 2 to 3.
     EXPECT_LT(loops[c].at("return_loop_area_Nmm"), 0.5 * loops[0].at("area_Nmm")) << c;
   }
   auto stored_change = [&](int c) {

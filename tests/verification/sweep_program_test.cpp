@@ -34,6 +34,15 @@ TEST(Sweep, OneKeyOverValuesRunsEachVariantAndPlotsThemTogether) {
   const double frictionless = peak_deflection(folder / "contact.friction=0");
   const double sticking = peak_deflection(folder / "contact.friction=5");
   EXPECT_LT(sticking, 0.6 * frictionless);
+  // sweep.csv gives each variant's results: its last cycle's peak as loops.csv has it.
+  for (std::size_t i = 0; i < 2; ++i) {
+    const auto loops = read_csv(folder / (i == 0 ? "contact.friction=0" : "contact.friction=5") / "loops.csv");
+    ASSERT_EQ(loops.size(), 1u);
+    EXPECT_NEAR(table[i].at("peak_deflection_mm"), loops[0].at("peak_deflection_mm"), 1e-6 * loops[0].at("peak_deflection_mm"));
+    EXPECT_NEAR(table[i].at("loop_area_Nmm"), loops[0].at("area_Nmm"), 1e-6 * std::abs(loops[0].at("area_Nmm")) + 1e-9);
+  }
+  EXPECT_EQ(table[1].at("cycles"), 1.0);
+  EXPECT_GT(table[1].at("axial_force_N"), 0.0);
   std::ifstream variant(folder / "cases" / "contact.friction=5.yaml");
   std::stringstream text;
   text << variant.rdbuf();

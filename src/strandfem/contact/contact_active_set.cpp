@@ -22,8 +22,8 @@ void ContactSet::begin_increment(bool loading_continues) {
     p.normal_switches = 0;
     p.friction_switches = 0;
     // Loading that goes on in the same sense keeps the slipping points slipping: start from there. Where it turns
-    // (V back after V out) they stick again; held in their old slip, the first increment of each Cardinal 1 m
-    // reversal failed twice and went on at a quarter of its size (docs/theory.md, "Newton with contact").
+    // (V back after V out) they stick again; held in their old slip, a reversal's first increment fails and is cut
+    // back (docs/theory.md, "Newton with contact").
     p.friction_mode = loading_continues && p.history.closed && p.history.slipping ? FrictionMode::kHeldSlip : FrictionMode::kFree;
     const Vec3 d = -p.history.slip_direction;  // friction opposes the slip
     p.slip_direction = {d.x(), d.y(), d.z()};

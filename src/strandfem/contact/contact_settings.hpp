@@ -55,11 +55,11 @@ const char* to_string(FrictionDirection direction);
 // How the tangential (stick) penalty is set.
 enum class TangentialPenalty {
   kPaper,       // eq. 2.6: K_t = fKt mu E d^2 xi_t / h, fixed
-  kElasticSlip  // from an allowed elastic slip: K_t = mu P / (elastic_slip h), P of the last converged state
+  kElasticSlip  // from an allowed elastic slip: K_t = mu P / (elastic_slip h), P the current normal force
 };
 
 // The default normal onset width per diameter of the thinner wire: a band where the answer no longer moves
-// (docs/validation.md, "Regularization: the normal onset").
+// (docs/validation/regularization.md, "The normal onset").
 constexpr double kNormalOnsetPerDiameter = 1e-5;
 
 struct ContactSettings {
@@ -73,7 +73,7 @@ struct ContactSettings {
   TangentialPenalty tangential_penalty = TangentialPenalty::kElasticSlip;
   // kElasticSlip: allowed elastic slip as a fraction of the contact element length h. A tenth of Abaqus' 0.005:
   // bending moves crossings by hundredths of a millimetre, and 0.05 mm of elastic slip (10 mm elements) let them
-  // all stick elastically (docs/validation.md, "The bending loop depends on the elastic slip").
+  // all stick elastically (docs/validation/regularization.md, "The stick's elastic slip in bending").
   double elastic_slip = 0.0005;
   // Friction: default coefficient, then material pairs, then axial zones (highest priority).
   double friction = 0.0;
@@ -92,7 +92,7 @@ struct ContactSettings {
   // less than this fraction of r_a + r_b (leaving again beyond twice that); pairs of candidates held
   // apart (the lay gaps between wires of one layer) stay out, which divides the factorization's flops by up
   // to six. A point that closes outside the pattern widens it at once (re-analysis). 0.003 rather than 0.01
-  // (session 35): S32 under bending keeps lay gaps of 0.01-0.035 mm out, 21 % fewer factor entries.
+  // S32 under bending keeps lay gaps of 0.01-0.035 mm out, 21 % fewer factor entries.
   double pattern_margin = 0.003;
   // Centerlines closer than this angle (degrees) are in line contact, others in point contact.
   double line_contact_angle = 20.0;

@@ -15,14 +15,14 @@ struct CaseRunOptions {
   std::function<void(const IncrementReport&)> on_increment;  // after each converged increment is written
   std::function<void(const IncrementReport&)> on_progress;   // after each Newton iteration (none: not reported)
   std::function<void(int converged_increments)> on_resume;   // once the checkpoint has been restored
-  // Stops after this many converged increments of this session (0: never), leaving the folder as a signal
+  // Stops after this many converged increments of this invocation (0: never), leaving the folder as a signal
   // would: results and checkpoint of the last converged increment, summary.json "running". For tests of resume.
   int stop_after = 0;
 };
 
 struct CaseRunResult {
   AnalysisStatus status;
-  double wall_seconds = 0;  // this session's
+  double wall_seconds = 0;  // this invocation's
   bool stopped = false;     // by stop_after
 };
 

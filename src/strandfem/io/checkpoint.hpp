@@ -14,7 +14,7 @@ namespace strandfem {
 inline constexpr const char* kCheckpointFileName = "checkpoint.bin";
 
 // What a checkpoint must match: the case file as parsed (comments and layout aside), less its solver and output
-// blocks, which may change between sessions (threads; tolerances or cut-backs to get past an increment that did
+// blocks, which may change between invocations (threads; tolerances or cut-backs to get past an increment that did
 // not converge), and less the steps' cycle counts, which the checkpoint keeps beside it: the last step's may grow
 // (more cycles after a run ended). FNV-1a of that text, in hex.
 std::string case_fingerprint(const CaseDefinition& c);

@@ -50,7 +50,7 @@ class ResultWriter {
   void on_increment(const StaticAnalysis& analysis, const IncrementReport& report);
   // Final displacements, the last ParaView frame (if not written yet) and summary.json.
   void finish(const StaticAnalysis& analysis, const AnalysisStatus& status, double wall_seconds);
-  // After --stop-after: summary.json says "stopped", with the wall time of this session and the results so far
+  // After --stop-after: summary.json says "stopped", with the wall time of this invocation and the results so far
   // (solver statistics, energies, contacts, the bending loops and checks of the peaks reached).
   void record_stop(const StaticAnalysis& analysis, double wall_seconds);
   // After an error that ends the run: summary.json with this status and message, if it can still be written.
@@ -63,7 +63,7 @@ class ResultWriter {
  private:
   void write_vtu(const StaticAnalysis& analysis, double time);
   void write_pvd() const;
-  // summary.json's content but its status: the model, this session's run and its derived results.
+  // summary.json's content but its status: the model, this invocation's run and its derived results.
   nlohmann::json run_summary(const StaticAnalysis& analysis, double wall_seconds);
   void write_summary(const nlohmann::json& summary) const;
 

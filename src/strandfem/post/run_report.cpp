@@ -23,9 +23,10 @@ std::string cycle_line(const nlohmann::json& loop) {
 
 std::string end_of_run_report(const nlohmann::json& summary) {
   const std::string status = summary.value("status", "unknown");
-  std::string text = fmt::format("{}: {} after {} converged increments, {:.3g} s on {} threads\n", summary.value("title", "case"),
+  const int threads = summary.value("threads", 1);
+  std::string text = fmt::format("{}: {} after {} converged increments, {:.3g} s on {} thread{}\n", summary.value("title", "case"),
                                  status == "converged" ? "done" : status, summary.value("converged_increments", 0),
-                                 number(summary, "wall_time_s"), summary.value("threads", 1));
+                                 number(summary, "wall_time_s"), threads, threads == 1 ? "" : "s");
   if (summary.contains("bending") && summary["bending"].contains("loops")) {
     const nlohmann::json& loops = summary["bending"]["loops"];
     if (loops.empty()) text += "bending: no cycle closed\n";
@@ -41,6 +42,28 @@ std::string end_of_run_report(const nlohmann::json& summary) {
                         1e-6 * number(axial, "secant_stiffness_N"), 1e-6 * number(axial, "theory_stiffness_N"),
                         axial.value("theory_ends", ""), percent(number(axial, "relative_to_theory")));
   return text;
+}
+
+std::string sweep_result_header() {
+  return "status,axial_strain,axial_force_N,secant_stiffness_N,relative_to_theory,cycles,peak_load_N,peak_deflection_mm,"
+         "loop_area_Nmm,secant_ei_Nm2,return_loop_area_Nmm";
+}
+
+std::string sweep_result_fields(const nlohmann::json& summary) {
+  const auto field = [](const nlohmann::json& j, const char* key) {
+    return j.contains(key) && j[key].is_number() ? fmt::format("{:.8g}", j[key].get<double>()) : std::string();
+  };
+  std::string text = summary.value("status", "");
+  const nlohmann::json none = nlohmann::json::object();
+  const nlohmann::json& axial = summary.contains("axial") ? summary["axial"] : none;
+  for (const char* key : {"axial_strain", "axial_force_N", "secant_stiffness_N", "relative_to_theory"}) text += "," + field(axial, key);
+  const bool bent = summary.contains("bending") && summary["bending"].contains("loops") && !summary["bending"]["loops"].empty();
+  if (!bent) return text + ",,,,,,";
+  const nlohmann::json& loops = summary["bending"]["loops"];
+  const nlohmann::json& last = loops.back();
+  text += "," + std::to_string(loops.size());
+  for (const char* key : {"peak_load_N", "peak_deflection_mm", "area_Nmm", "secant_ei_Nm2"}) text += "," + field(last, key);
+  return text + "," + (last.contains("return_loop") ? field(last["return_loop"], "area_Nmm") : std::string());
 }
 
 }  // namespace strandfem

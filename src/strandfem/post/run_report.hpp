@@ -10,4 +10,10 @@ namespace strandfem {
 // force and the secant slope against the linear theory for its ends. Every line ends with '\n'.
 std::string end_of_run_report(const nlohmann::json& summary);
 
+// The results a sweep tabulates per variant (sweep.csv), from its summary.json: the status, the axial response
+// at the end and, for bent strands, the number of cycles and the last cycle's peak, loop, secant EI and return
+// loop. Empty fields where the run measured nothing of the kind.
+std::string sweep_result_header();
+std::string sweep_result_fields(const nlohmann::json& summary);
+
 }  // namespace strandfem

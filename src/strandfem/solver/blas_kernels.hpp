@@ -14,7 +14,7 @@ bool cpu_has_skylakex_instructions();
 
 // The OPENBLAS_CORETYPE to run with instead of `loaded_core`, or "" to keep it. OpenBLAS 0.3.21 takes AMD Zen 4/5
 // for Haswell or Zen and runs AVX2 kernels although the CPU has AVX-512: there the SkylakeX kernels factor a
-// Cardinal 1 m tangent about a fifth faster (docs/performance.md, session 28). A value the user set is kept.
+// Cardinal 1 m tangent about a fifth faster (docs/performance.md). A value the user set is kept.
 std::string preferred_openblas_core(const std::string& loaded_core, bool cpu_has_skylakex, bool user_set_core);
 
 }  // namespace strandfem

@@ -108,7 +108,7 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
       // Not under applied loads alone while the viscous stabilization acts: the damped soft modes (contacts settling)
       // lag, so the last increment's motion holds a decaying transient that a secant predictor overshoots, while the
       // plain predictor's first correction, from a converged state with its tangent, is the tangent predictor
-      // (Cardinal's tension ramp: 43 corrections and 4 factorizations plain, 76-197 and up to 76 extrapolated).
+      // (on Cardinal's tension ramp the extrapolated predictor takes two to four times the corrections).
       // Where the step moves driven DOFs the plain predictor strains the elements next to them alone (docs/theory.md).
       const bool secant_predictor = moves_driven_dofs || !(model_.options.stabilization > 0);
       const double extrapolation = model_.options.extrapolate && secant_predictor && !idle_step && p.last_size > 0 &&

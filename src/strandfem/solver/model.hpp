@@ -41,7 +41,7 @@ struct SolverOptions {
   bool stabilization_ramp_off = true;
   std::string linear_solver = "mumps_single";  // mumps_single (single-precision factors refined by GMRES) | mumps | umfpack
   int threads = 0;                        // OpenMP threads for element evaluation; 0 = OpenMP default
-  // Benchmark hook: the tangent of this factorization (counted from 1 in this session; 0: none) is written
+  // Benchmark hook: the tangent of this factorization (counted from 1 in this invocation; 0: none) is written
   // to dump_tangent_path before it is factored (solver/tangent_dump.hpp, bench/tangent_bench).
   int dump_tangent_factorization = 0;
   std::string dump_tangent_path;

@@ -69,7 +69,7 @@ class MumpsSolver final : public LinearSolver {
     id_.icntl[13] = 50;  // ICNTL(14): 50 % working-space relaxation
     // Single-precision factors only precondition GMRES: the diagonal scaling (ICNTL(8) = 1) serves them as well
     // as the iterative row and column scaling MUMPS picks by default (7), which costs about 8 % of each
-    // factorization on an S32 bending tangent and runs on one thread (docs/performance.md, session 38).
+    // factorization on an S32 bending tangent and runs on one thread (docs/performance/linear-algebra.md).
     if (kSingle) id_.icntl[7] = 1;
   }
   ~MumpsSolver() override {
@@ -93,7 +93,7 @@ class MumpsSolver final : public LinearSolver {
     for (int& p : pivot_position_) ++p;  // PERM_IN is 1-based
     // The pattern's node blocks (columns with the same rows) let MUMPS analyze the graph of blocks instead of
     // the graph of equations (ICNTL(15) = 1): the same pivot order and factors, in 0.12 s instead of 0.20 s on
-    // an S32 bending tangent (docs/performance.md, session 39).
+    // an S32 bending tangent (docs/performance/linear-algebra.md).
     block_pointer_.assign(pattern.block_start.begin(), pattern.block_start.end());
     for (int& b : block_pointer_) ++b;  // BLKPTR is 1-based
     id_.icntl[14] = block_pointer_.size() > 1 ? 1 : 0;
