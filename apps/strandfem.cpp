@@ -19,6 +19,7 @@
 #include "strandfem/io/case_run.hpp"
 #include "strandfem/io/case_variant.hpp"
 #include "strandfem/io/output_file.hpp"
+#include "plot_scripts.hpp"
 #include "strandfem/analysis/load_protocol.hpp"
 #include "strandfem/post/model_report.hpp"
 #include "strandfem/post/run_report.hpp"
@@ -54,8 +55,6 @@ int resolve_threads(int asked, const std::string& source) {
   return asked > 0 ? asked : omp_get_max_threads();
 }
 
-// --plots: the figures of a results folder, drawn by the plotting scripts of the source tree (Debian's /usr/bin/python3 with
-// matplotlib). A missing or failing plotter is a warning: the results themselves are complete.
 // ", 1/4 of the nominal increment after 2 cut-backs" for an increment smaller than the step's nominal one.
 std::string increment_size_note(const strandfem::IncrementReport& r) {
   const std::string searched = r.searched_recovery ? ", with line search" : "";
@@ -105,11 +104,6 @@ class RunProgress {
   std::chrono::steady_clock::time_point first_time_;
 };
 
-void draw_plots(const std::string& output_dir) {
-  const std::string command = std::string("/usr/bin/python3 '") + STRANDFEM_SCRIPTS_DIR + "/plot_bending.py' '" +
-                              output_dir + "' > /dev/null";
-  if (std::system(command.c_str()) != 0) std::cerr << "warning: plotting failed (" << command << ")\n";
-}
 
 // The end-of-run report on stdout, from the summary.json the run has just written.
 void print_report(const std::string& output_dir) {
@@ -158,7 +152,7 @@ int run_case_file(const std::string& case_path, const std::string& output_dir, i
     if (!quiet) std::cerr << "stopped after " << stop_after << " increments as asked; --resume continues from " << output_dir << "\n";
     return kExitStopped;
   }
-  if (plots) draw_plots(output_dir);
+  if (plots) strandfem_app::draw_figures("plot_bending.py", output_dir);
   if (!quiet) print_report(output_dir);
   if (!result.status.converged) {
     std::cerr << "error: " << result.status.message << "\nconverged results so far are in " << output_dir << "\n";
@@ -249,8 +243,7 @@ int run_sweep(const std::vector<std::string>& cases, const std::string& key, con
   }
   if (!csv) throw strandfem::OutputError("cannot write " + table);
   csv.close();
-  const std::string command = std::string("/usr/bin/python3 '") + STRANDFEM_SCRIPTS_DIR + "/plot_sweep.py' '" + output_dir + "' > /dev/null";
-  if (std::system(command.c_str()) != 0) std::cerr << "warning: plotting failed (" << command << ")\n";
+  strandfem_app::draw_figures("plot_sweep.py", output_dir);
   if (!quiet) std::cerr << "sweep of " << variants.size() << " cases in " << output_dir << " (sweep.csv, sweep.png)\n";
   return result;
 }
