@@ -57,7 +57,7 @@ int resolve_threads(int asked, const std::string& source) {
 
 // ", 1/4 of the nominal increment after 2 cut-backs" for an increment smaller than the step's nominal one.
 std::string increment_size_note(const strandfem::IncrementReport& r) {
-  const std::string searched = r.searched_recovery ? ", with line search" : "";
+  const std::string searched = std::string(r.searched_recovery ? ", with line search" : "") + (r.stabilized ? ", stabilized" : "");
   if (r.relative_size > 1 - 1e-9) return searched;
   const double inverse = 1 / r.relative_size;
   char size[32];

@@ -90,10 +90,14 @@ def plot_folder(folder):
             label += f"; from peak {c - 1}: {energy(loop_of[c]['return_loop_area_Nmm'])}"
         ax.plot([float(r["midspan_deflection_mm"]) - y0 for r in pts], [float(r["transverse_load_N"]) for r in pts],
                 "-o", ms=2.5, lw=1, label=label)
+    # The loop fills the plot: the references are drawn up to its edge and their values at the peak go in the legend.
+    x_low, x_high = ax.get_xlim()
     if loops:
         peak = float(loops[0]["peak_load_N"])
-        for key, style, label in (("eq31_ei_max_mm", "k--", "EImax (eq. 3.1)"), ("eq31_ei_min_mm", "k:", "EImin (eq. 3.1)")):
-            ax.plot([0, float(loops[0][key])], [0, peak], style, lw=1, label=label)
+        for key, style, name in (("eq31_ei_max_mm", "k--", "EImax"), ("eq31_ei_min_mm", "k:", "EImin")):
+            at_peak = float(loops[0][key])
+            ax.plot([0, at_peak], [0, peak], style, lw=1, label=f"{name} (eq. 3.1): {at_peak:.3g} mm at the peak")
+    ax.set_xlim(x_low, x_high)
     written.append(save(fig, ax, "midspan deflection (mm), from the start of the first cycle", "transverse load V (N)",
                         os.path.join(folder, "bending_hysteresis.png"), legend_below=True))
     if curves:

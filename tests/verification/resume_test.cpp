@@ -230,8 +230,8 @@ TEST(Resume, RefusesACheckpointOfAnEarlierFormat) {
     checkpoint.seekg(28);
     int version = 0;
     checkpoint.read(reinterpret_cast<char*>(&version), sizeof version);
-    ASSERT_EQ(version, 8);
-    version = 7;
+    ASSERT_EQ(version, 9);
+    version = 8;
     checkpoint.seekp(28);
     checkpoint.write(reinterpret_cast<const char*>(&version), sizeof version);
   }

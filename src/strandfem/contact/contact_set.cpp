@@ -177,6 +177,17 @@ void ContactSet::set_start_points(const Mesh& mesh, const std::vector<NodeState>
   }
 }
 
+void ContactSet::set_stabilization(double fraction, const Mesh& mesh, const std::vector<NodeState>& state) {
+  if (!settings_.enabled || fraction == settings_.stabilization) return;
+  settings_.stabilization = fraction;
+  for (ContactPoint& p : points_) {
+    p.sliding_stabilization = sliding_stabilization(p);
+    p.start_set = false;
+  }
+  evaluate(mesh, state, false);  // the contact points of the converged state, where the springs start
+  set_start_points(mesh, state);
+}
+
 double ContactSet::dissipated_energy() const {
   double total = 0;
   for (const ContactPoint& p : points_) total += p.history.dissipated_energy;

@@ -85,6 +85,7 @@ class ContactSet final : public Interaction {
   // Work of friction over all slip up to the last commit, N mm.
   double dissipated_energy() const;
   double commit_stabilization_energy() const override { return commit_stabilization_energy_; }
+  void set_stabilization(double fraction, const Mesh& mesh, const std::vector<NodeState>& state) override;
 
  private:
   void search(const Mesh& mesh, const std::vector<NodeState>& state);

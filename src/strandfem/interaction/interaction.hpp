@@ -53,6 +53,9 @@ class Interaction {
   // Energy the last commit took out of the interaction's stabilization (N mm; 0 without one): reported beside the
   // viscous stabilization's, which Abaqus asks to keep small against the work done.
   virtual double commit_stabilization_energy() const { return 0.0; }
+  // Sets the interaction's own stabilization (contact: the tangential spring, a fraction of the normal penalty),
+  // restarted from `state`, the converged one: the solver's recovery aid switches it on and off between increments.
+  virtual void set_stabilization(double /*fraction*/, const Mesh& /*mesh*/, const std::vector<NodeState>& /*state*/) {}
   // Rejected increment (cut-back): the next begin_increment starts again from the converged history.
   virtual void revert() = 0;
   // Checkpoints: writes the converged state (history, bookkeeping); restore_state reads it back in place of the

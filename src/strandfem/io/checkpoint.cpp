@@ -21,9 +21,9 @@ constexpr const char* kMagic = "StrandFEM checkpoint";
 // 6: the same content; deflection_curves.csv has one more column (eq32_ei_min_shear_mm), so a run that writes it
 //    does not continue one of an earlier version.
 // 7: the bending state adds each peak's check of the core's curve against eq. 3.2.
-// 8: each peak's check adds the curve's rise from the load point, and deflection_curves.csv four columns. Only
-//    this version is read.
-constexpr int kFormatVersion = 8;
+// 8: each peak's check adds the curve's rise from the load point, and deflection_curves.csv four columns.
+// 9: the analysis adds the automatic stabilization's state. Only this version is read.
+constexpr int kFormatVersion = 9;
 
 std::string fnv1a_hex(const std::string& text) {
   std::uint64_t hash = 14695981039346656037ULL;

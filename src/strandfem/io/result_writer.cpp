@@ -149,6 +149,7 @@ nlohmann::json solver_statistics(const StaticAnalysis& analysis) {
           {"rejected_extrapolations", a.rejected_extrapolations},
           {"plain_retries", a.plain_retries},
           {"searched_recoveries", a.searched_recoveries},
+          {"stabilized_steps", a.stabilized_steps},
           {"limited_corrections", a.limited_corrections},
           {"double_precision_fallbacks", a.double_precision_fallbacks},
           {"force_only_acceptances", a.force_only_acceptances},

@@ -11,7 +11,7 @@ void parse_solver_options(const YamlReader& reader, const YAML::Node& node, Solv
   reader.check_keys(node, "solver", {"force_tolerance", "moment_tolerance", "displacement_tolerance", "load_tolerance", "max_iterations",
                                      "max_cutbacks", "line_search_cuts", "linear_solver", "threads",
                                      "krylov_iterations", "refinement_iterations", "krylov_tolerance", "newton_forcing", "extrapolate",
-                                     "stabilization", "stabilization_ramp_off"});
+                                     "stabilization", "stabilization_ramp_off", "automatic_stabilization"});
   if (node["force_tolerance"]) o.force_tolerance = reader.positive(node["force_tolerance"], "solver.force_tolerance", "-");
   if (node["moment_tolerance"]) o.moment_tolerance = reader.positive(node["moment_tolerance"], "solver.moment_tolerance", "-");
   if (node["displacement_tolerance"]) o.displacement_tolerance = reader.positive(node["displacement_tolerance"], "solver.displacement_tolerance", "-");
@@ -34,6 +34,8 @@ void parse_solver_options(const YamlReader& reader, const YAML::Node& node, Solv
   }
   if (node["stabilization_ramp_off"])
     o.stabilization_ramp_off = reader.boolean(node["stabilization_ramp_off"], "solver.stabilization_ramp_off");
+  if (node["automatic_stabilization"])
+    o.automatic_stabilization = reader.boolean(node["automatic_stabilization"], "solver.automatic_stabilization");
 }
 
 nlohmann::json resolved_solver_options(const SolverOptions& o) {
@@ -52,6 +54,7 @@ nlohmann::json resolved_solver_options(const SolverOptions& o) {
           {"extrapolate", o.extrapolate},
           {"stabilization", o.stabilization},
           {"stabilization_ramp_off", o.stabilization_ramp_off},
+          {"automatic_stabilization", o.automatic_stabilization},
           {"threads", o.threads}};
 }
 

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace strandfem {
 namespace {
 
@@ -27,10 +29,15 @@ std::string end_of_run_report(const nlohmann::json& summary) {
   std::string text = fmt::format("{}: {} after {} converged increments, {:.3g} s on {} thread{}\n", summary.value("title", "case"),
                                  status == "converged" ? "done" : status, summary.value("converged_increments", 0),
                                  number(summary, "wall_time_s"), threads, threads == 1 ? "" : "s");
-  if (summary.contains("bending") && summary["bending"].contains("loops")) {
-    const nlohmann::json& loops = summary["bending"]["loops"];
-    if (loops.empty()) text += "bending: no cycle closed\n";
-    for (const nlohmann::json& loop : loops) text += cycle_line(loop);
+  if (summary.contains("energy") && number(summary["energy"], "stabilization_energy_Nmm") > 0)
+    text += fmt::format("stabilization: {:.3g} % of the work done on the strand went into it\n",
+                        100 * number(summary["energy"], "stabilization_fraction"));
+  // A bent strand: a cyclic step with a transverse load (an axial cycle has loops of no transverse load).
+  const bool bent = summary.contains("bending") && summary["bending"].contains("loops") &&
+                    std::any_of(summary["bending"]["loops"].begin(), summary["bending"]["loops"].end(),
+                                [](const nlohmann::json& loop) { return number(loop, "peak_load_N") > 0; });
+  if (bent) {
+    for (const nlohmann::json& loop : summary["bending"]["loops"]) text += cycle_line(loop);
     return text;
   }
   if (!summary.contains("axial")) return text;
@@ -50,20 +57,22 @@ std::string sweep_result_header() {
 }
 
 std::string sweep_result_fields(const nlohmann::json& summary) {
-  const auto field = [](const nlohmann::json& j, const char* key) {
-    return j.contains(key) && j[key].is_number() ? fmt::format("{:.8g}", j[key].get<double>()) : std::string();
-  };
   std::string text = summary.value("status", "");
+  const auto add = [&text](const nlohmann::json& j, const char* key) {
+    text += ',';
+    if (j.contains(key) && j[key].is_number()) text += fmt::format("{:.8g}", j[key].get<double>());
+  };
   const nlohmann::json none = nlohmann::json::object();
   const nlohmann::json& axial = summary.contains("axial") ? summary["axial"] : none;
-  for (const char* key : {"axial_strain", "axial_force_N", "secant_stiffness_N", "relative_to_theory"}) text += "," + field(axial, key);
+  for (const char* key : {"axial_strain", "axial_force_N", "secant_stiffness_N", "relative_to_theory"}) add(axial, key);
   const bool bent = summary.contains("bending") && summary["bending"].contains("loops") && !summary["bending"]["loops"].empty();
   if (!bent) return text + ",,,,,,";
   const nlohmann::json& loops = summary["bending"]["loops"];
   const nlohmann::json& last = loops.back();
-  text += "," + std::to_string(loops.size());
-  for (const char* key : {"peak_load_N", "peak_deflection_mm", "area_Nmm", "secant_ei_Nm2"}) text += "," + field(last, key);
-  return text + "," + (last.contains("return_loop") ? field(last["return_loop"], "area_Nmm") : std::string());
+  text += fmt::format(",{}", loops.size());
+  for (const char* key : {"peak_load_N", "peak_deflection_mm", "area_Nmm", "secant_ei_Nm2"}) add(last, key);
+  add(last.contains("return_loop") ? last["return_loop"] : none, "area_Nmm");
+  return text;
 }
 
 }  // namespace strandfem

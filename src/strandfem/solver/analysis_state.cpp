@@ -10,7 +10,8 @@ namespace {
 // 4: the statistics add the corrections cut by the step control (limited_corrections). Only this version is read:
 //    the statistics of the earlier ones have another layout.
 // 5: adds the load norms the step's convergence test measures against, and the statistics the searched recoveries.
-constexpr int kStateVersion = 5;
+// 6: adds whether the automatic stabilization is on, and the statistics the steps it switched on in.
+constexpr int kStateVersion = 6;
 
 void save_nodes(ArchiveWriter& out, const std::vector<NodeState>& nodes) {
   out.value(static_cast<std::uint64_t>(nodes.size()));
@@ -41,6 +42,7 @@ void StaticAnalysis::save_state(ArchiveWriter& out) const {
   out.value(std::array<double, 5>{p.fraction, p.size, p.largest_size, p.last_size, p.previous_last_size});
   out.value(std::array<int, 2>{p.easy_at_cap, p.converged_increments});
   out.value(p.extrapolation_failed);
+  out.value(p.stabilized);
   out.map(p.totals);
   out.map(p.previous_change);
   out.value(convergence_.step_reference());
@@ -71,6 +73,7 @@ void StaticAnalysis::restore_state(ArchiveReader& in) {
   const auto counts = in.value<std::array<int, 2>>();
   p.easy_at_cap = counts[0], p.converged_increments = counts[1];
   in.value(p.extrapolation_failed);
+  in.value(p.stabilized);
   in.map(p.totals);
   in.map(p.previous_change);
   const auto step_reference = in.value<LoadReference>();
@@ -88,6 +91,7 @@ void StaticAnalysis::restore_state(ArchiveReader& in) {
   progress_ = p;
   convergence_.begin_step(step_reference);
   state_ = committed_state_;
+  if (p.stabilized) set_automatic_stabilization(true);
   applied_motion_ = committed_motion_;
   build_pattern();  // the interactions' element pairs of the checkpoint (not a rebuild the run would count)
   assembler_->assemble(model_, model_state_, state_, internal_forces_, nullptr);

@@ -10,7 +10,25 @@ namespace strandfem {
 namespace {
 constexpr int kEasyIncrementsBeforeRegrowth = 3;
 constexpr int kRecoveryLineSearchCuts = 4;  // halvings per correction on the attempts after a failed one
+// The automatic stabilization: viscous damping of this fraction of the wires' elastic stiffness, and contact springs
+// of this fraction of the normal penalty, on the motion since the last converged increment (docs/theory.md,
+// "Automatic stabilization"); the step goes on from this share of its nominal increment.
+constexpr double kAutomaticViscousStabilization = 0.01;
+constexpr double kAutomaticContactStabilization = 1e-4;
+constexpr double kStabilizedRestartSize = 0.25;
 }  // namespace
+
+void StaticAnalysis::set_automatic_stabilization(bool on) {
+  progress_.stabilized = on;
+  if (on && !stabilization_.initialized()) {
+    std::vector<NodeState> reference;
+    for (const MeshNode& n : model_.mesh.nodes) reference.push_back(n.reference);
+    stabilization_.initialize(model_.elements, reference);
+  }
+  const double contact = model_.contact_settings.stabilization;
+  for (Interaction* interaction : model_state_.interactions())
+    interaction->set_stabilization(on ? std::max(contact, kAutomaticContactStabilization) : contact, model_.mesh, committed_state_);
+}
 
 std::string StaticAnalysis::stop_message(const std::string& step_name, int ramp, int increment, double converged_fraction,
                                          double target, double nominal, const IncrementReport& last) const {
@@ -31,6 +49,9 @@ std::string StaticAnalysis::stop_message(const std::string& step_name, int ramp,
                 cuts, search.c_str(), opt.max_cutbacks, std::ldexp(1.0, -opt.max_cutbacks),
                 nominal * std::ldexp(1.0, -opt.max_cutbacks));
   message += text;
+  if (opt.automatic_stabilization)
+    message += "  then the automatic stabilization (viscous and contact) for the rest of the step, from a quarter of the nominal "
+               "increment, with the same halvings.\n";
   message +=
       "  check: a load or motion beyond what the strand can carry at this point (a wire yielding through, or sliding "
       "without end); wires that overlap in the reference geometry (`strandfem info` gives each layer's "
@@ -66,6 +87,7 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
     }
     if (!p.in_step) {
       p.in_step = true;
+      if (p.stabilized) set_automatic_stabilization(false);
       convergence_.begin_step(convergence_.load_norms(dofs_, committed_forces_, committed_external_));
       p.fraction = 0;
       p.size = p.largest_size = nominal;
@@ -110,7 +132,7 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
       // plain predictor's first correction, from a converged state with its tangent, is the tangent predictor
       // (on Cardinal's tension ramp the extrapolated predictor takes two to four times the corrections).
       // Where the step moves driven DOFs the plain predictor strains the elements next to them alone (docs/theory.md).
-      const bool secant_predictor = moves_driven_dofs || !(model_.options.stabilization > 0);
+      const bool secant_predictor = moves_driven_dofs || !(model_.options.stabilization > 0 || p.stabilized);
       const double extrapolation = model_.options.extrapolate && secant_predictor && !idle_step && p.last_size > 0 &&
                                            cutbacks == 0 && !plain_retry && !p.extrapolation_failed
                                        ? (target - p.fraction) / p.last_size
@@ -119,6 +141,7 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
       plain_retry = false;
       // Ramped off: the factor falls linearly from its full value at the step's start to zero at its end.
       stabilization_factor_ = model_.options.stabilization * (model_.options.stabilization_ramp_off ? 1.0 - p.fraction : 1.0);
+      if (p.stabilized) stabilization_factor_ = std::max(stabilization_factor_, kAutomaticViscousStabilization);
       // The attempts after a failure search their corrections, where the case runs without line search.
       const bool searched = cutbacks > 0 && model_.options.line_search_cuts < kRecoveryLineSearchCuts;
       // Within a ramp, or across ramps that load the same way, there is a last increment to continue from; the first
@@ -138,6 +161,7 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
       if (solve_increment(attempt, ramps, report, on_progress)) {
         if (searched) ++statistics_.searched_recoveries;
         report.searched_recovery = searched;
+        report.stabilized = p.stabilized;
         if (retrying_plain) p.extrapolation_failed = true;
         if (report.force_only) ++statistics_.force_only_acceptances;
         bool pattern_changed = false;
@@ -189,6 +213,16 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
         // and failing in turn could otherwise shrink the increments without bound (the load stalls at a limit).
         const double smallest = nominal * std::ldexp(1.0, -model_.options.max_cutbacks);
         if (++cutbacks > model_.options.max_cutbacks || 0.5 * p.size < smallest * (1.0 - 1e-9)) {
+          // Before stopping, the automatic stabilization: on for the rest of the step, from a quarter of the nominal
+          // increment, with the full sequence of cut-backs again.
+          if (model_.options.automatic_stabilization && !p.stabilized) {
+            set_automatic_stabilization(true);
+            ++statistics_.stabilized_steps;
+            cutbacks = 0;
+            p.size = p.largest_size = kStabilizedRestartSize * nominal;
+            p.easy_at_cap = 0;
+            continue;
+          }
           AnalysisStatus status;
           status.converged = false;
           status.message = stop_message(step.name, p.ramp, p.converged_increments + 1, p.fraction, target, nominal, report);

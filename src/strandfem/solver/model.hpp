@@ -39,6 +39,9 @@ struct SolverOptions {
   // constant over each step or ramped off linearly to zero at the step's end.
   double stabilization = 0;
   bool stabilization_ramp_off = true;
+  // Recovery aid: when an increment cannot converge after its cut-backs, viscous (0.01) and contact (1e-4)
+  // stabilization switch on for the rest of the step, and the step goes on from a quarter of its nominal increment.
+  bool automatic_stabilization = true;
   std::string linear_solver = "mumps_single";  // mumps_single (single-precision factors refined by GMRES) | mumps | umfpack
   int threads = 0;                        // OpenMP threads for element evaluation; 0 = OpenMP default
   // Benchmark hook: the tangent of this factorization (counted from 1 in this invocation; 0: none) is written

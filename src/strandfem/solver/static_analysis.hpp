@@ -30,6 +30,7 @@ struct IncrementReport {
   bool force_only = false;     // accepted on the force test alone (a tenfold margin after several corrections)
   int cutbacks = 0;            // failed attempts halved before this increment converged
   bool searched_recovery = false;  // converged after cut-backs with line search the case does not ask for
+  bool stabilized = false;     // converged with the automatic stabilization on (SolverOptions::automatic_stabilization)
   double relative_size = 1;    // the increment's size over the step's nominal increment
 };
 
@@ -44,6 +45,7 @@ struct AnalysisStatistics {
   int force_only_acceptances = 0;  // increments accepted on the force test alone (see IncrementReport::force_only)
   int plain_retries = 0;       // failed extrapolated increments repeated at the same size without extrapolation
   int searched_recoveries = 0; // increments converged after cut-backs with line search the case does not ask for
+  int stabilized_steps = 0;    // ramps in which the automatic stabilization switched on (SolverOptions)
   int limited_corrections = 0; // Newton corrections shortened by an interaction's step control (admissible_fraction)
   int double_precision_fallbacks = 0;  // single-precision factors that GMRES could not refine: solved in double
   double assembly_seconds = 0; // tangent assembly (elements and interactions) for Newton corrections
@@ -118,6 +120,7 @@ class StaticAnalysis {
     int easy_at_cap = 0;          // easy increments at the cap since it was set
     int converged_increments = 0;
     bool extrapolation_failed = false;  // a plain retry converged where extrapolation failed: no more in this ramp
+    bool stabilized = false;      // the automatic stabilization is on for the rest of the ramp
     std::map<ActionKey, double> totals;           // action values at the end of the previous ramp
     std::map<ActionKey, double> previous_change;  // each action's change over the previous ramp
     double previous_last_size = 0;                // that ramp's last converged increment (its fraction units)
@@ -169,6 +172,8 @@ class StaticAnalysis {
   double model_extent2_ = 0;  // squared diagonal of the reference bounding box
   double last_correction2_ = 0;
   void add_increment_work();
+  // Switches the automatic stabilization (SolverOptions::automatic_stabilization) on or off from the converged state.
+  void set_automatic_stabilization(bool on);
   // The stabilization for the assembler: this increment's factor against the last converged state.
   ElementDamping damping() const { return {&stabilization_, &committed_state_, stabilization_factor_}; }  // the converged increment's external work and stabilization energy into energies_
   ViscousStabilization stabilization_;
