@@ -172,14 +172,8 @@ void StaticAnalysis::extrapolate_free_motion(double factor) {
   }
 }
 
-bool StaticAnalysis::solve_increment(const IncrementAttempt& attempt, const std::map<ActionKey, std::pair<double, double>>& ramps,
-                                     IncrementReport& report, const std::function<void(const IncrementReport&)>& on_progress) {
-  const SolverOptions& opt = model_.options;
-  const double step_fraction = attempt.step_fraction, motion_floor2 = attempt.motion_floor2;
-  double extrapolation = attempt.extrapolation;
-  const std::size_t node_count = state_.size();
-  external_.assign(6 * node_count, 0.0);
-  // Applied loads, and imposed motions: the driven DOFs move to their targets before iterating.
+void StaticAnalysis::apply_targets(double step_fraction, const std::map<ActionKey, std::pair<double, double>>& ramps) {
+  external_.assign(6 * state_.size(), 0.0);
   std::vector<AppliedLoad> loads;
   for (const auto& [key, ramp] : ramps) {
     const double target = ramp.first + step_fraction * (ramp.second - ramp.first);
@@ -198,55 +192,78 @@ bool StaticAnalysis::solve_increment(const IncrementAttempt& attempt, const std:
   }
   convergence_.set_applied_loads(std::move(loads));
   update_slaves();
+}
+
+ResidualCheck StaticAnalysis::evaluate_residual(std::vector<double>& rhs) {
+  {
+    const ScopedTimer timer(statistics_.residual_seconds);
+    assembler_->assemble(model_, model_state_, state_, internal_forces_, nullptr, damping());
+  }
+  return convergence_.measure(dofs_, internal_forces_, external_, rhs);
+}
+
+double StaticAnalysis::apply_correction(const std::vector<NodeState>& start, const std::vector<double>& correction, double alpha) {
+  state_ = start;
+  double norm2 = 0;
+  for (std::size_t node = 0; node < state_.size(); ++node) {
+    if (dofs_.tie_of[node] >= 0) continue;
+    Vec3 du = Vec3::Zero(), dtheta = Vec3::Zero();
+    for (int c = 0; c < 6; ++c) {
+      const int eq = dofs_.equation[node][c];
+      if (eq < 0) continue;
+      (c < 3 ? du[c] : dtheta[c - 3]) = alpha * correction[eq];
+    }
+    norm2 += du.squaredNorm() + length_scale_ * length_scale_ * dtheta.squaredNorm();
+    state_[node].position += du;
+    state_[node].rotation = (quaternion_from_rotation_vector(dtheta) * state_[node].rotation).normalized();
+  }
+  update_slaves();
+  return norm2;
+}
+
+void StaticAnalysis::accept_iterate() {
+  bool pattern_grew = false;
+  for (Interaction* interaction : model_state_.interactions()) {
+    interaction->accept_iterate(model_.mesh);
+    pattern_grew |= interaction->element_pairs_grew();
+  }
+  // A contact closed outside the tangent's pattern: widen it now, so that the next tangent is complete.
+  if (pattern_grew) rebuild_pattern();
+}
+
+int StaticAnalysis::changes_at_convergence() {
+  int changes = 0;
+  for (Interaction* interaction : model_state_.interactions()) changes += interaction->changes_at_convergence();
+  return changes;
+}
+
+ResidualCheck StaticAnalysis::choose_predictor(double extrapolation, ResidualCheck plain, std::vector<double>& rhs, IncrementReport& report) {
+  if (!(extrapolation > 0)) return plain;
+  // The extrapolated predictor must beat the plain one: after slip events or contact changes the last
+  // increment's motion is not proportional to the load, and extrapolating it can start Newton far off.
+  const std::vector<NodeState> plain_state = state_;
+  extrapolate_free_motion(extrapolation);
+  update_slaves();
+  const ResidualCheck extrapolated = evaluate_residual(rhs);
+  if (extrapolated.relative < plain.relative) {
+    report.extrapolated = true;
+    return extrapolated;
+  }
+  state_ = plain_state;
+  ++statistics_.rejected_extrapolations;
+  return evaluate_residual(rhs);
+}
+
+bool StaticAnalysis::solve_increment(const IncrementAttempt& attempt, const std::map<ActionKey, std::pair<double, double>>& ramps,
+                                     IncrementReport& report, const std::function<void(const IncrementReport&)>& on_progress) {
+  const SolverOptions& opt = model_.options;
+  // Applied loads, and imposed motions: the driven DOFs move to their targets before iterating.
+  apply_targets(attempt.step_fraction, ramps);
   for (Interaction* interaction : model_state_.interactions()) interaction->begin_increment(attempt.loading_continues);
-  const int n = dofs_.equation_count;
-  std::vector<double> rhs(n);
+  std::vector<double> rhs(dofs_.equation_count);
   double increment_displacement2 = 0;
   last_correction2_ = 0;
-  // Residual at the current state: rhs = -residual on free DOFs, the relative norm and the force test.
-  auto evaluate_residual = [&]() {
-    {
-      const ScopedTimer timer(statistics_.residual_seconds);
-      assembler_->assemble(model_, model_state_, state_, internal_forces_, nullptr, damping());
-    }
-    return convergence_.measure(dofs_, internal_forces_, external_, rhs);
-  };
-  // state_ = start + alpha * correction (spins for rotations); returns the squared correction norm.
-  std::vector<NodeState> start;
-  std::vector<double> correction;
-  auto apply_correction = [&](double alpha) {
-    state_ = start;
-    double norm2 = 0;
-    for (std::size_t node = 0; node < node_count; ++node) {
-      if (dofs_.tie_of[node] >= 0) continue;
-      Vec3 du = Vec3::Zero(), dtheta = Vec3::Zero();
-      for (int c = 0; c < 6; ++c) {
-        const int eq = dofs_.equation[node][c];
-        if (eq < 0) continue;
-        (c < 3 ? du[c] : dtheta[c - 3]) = alpha * correction[eq];
-      }
-      norm2 += du.squaredNorm() + length_scale_ * length_scale_ * dtheta.squaredNorm();
-      state_[node].position += du;
-      state_[node].rotation = (quaternion_from_rotation_vector(dtheta) * state_[node].rotation).normalized();
-    }
-    update_slaves();
-    return norm2;
-  };
-  auto accept_iterate = [&] {
-    bool pattern_grew = false;
-    for (Interaction* interaction : model_state_.interactions()) {
-      interaction->accept_iterate(model_.mesh);
-      pattern_grew |= interaction->element_pairs_grew();
-    }
-    // A contact closed outside the tangent's pattern: widen it now, so that the next tangent is complete.
-    if (pattern_grew) rebuild_pattern();
-  };
-  auto changes_at_convergence = [&] {
-    int changes = 0;
-    for (Interaction* interaction : model_state_.interactions()) changes += interaction->changes_at_convergence();
-    return changes;
-  };
-  ResidualCheck current = evaluate_residual();
+  ResidualCheck current = evaluate_residual(rhs);
   // A step with nothing to do starts where the last one converged (or from the stress-free reference state), for
   // the same loads: Newton could only chase round-off, and its displacement test (correction against the
   // increment's motion, both nil) could never pass. Accepted at once when its residual is round-off; the
@@ -259,22 +276,7 @@ bool StaticAnalysis::solve_increment(const IncrementAttempt& attempt, const std:
     if (on_progress) on_progress(report);
     return true;
   }
-  if (extrapolation > 0) {
-    // The extrapolated predictor must beat the plain one: after slip events or contact changes the last
-    // increment's motion is not proportional to the load, and extrapolating it can start Newton far off.
-    const std::vector<NodeState> plain = state_;
-    const double plain_residual = current.relative;
-    extrapolate_free_motion(extrapolation);
-    update_slaves();
-    current = evaluate_residual();
-    if (!(current.relative < plain_residual)) {
-      state_ = plain;
-      current = evaluate_residual();
-      extrapolation = 0;
-      ++statistics_.rejected_extrapolations;
-    }
-    report.extrapolated = extrapolation > 0;
-  }
+  current = choose_predictor(attempt.extrapolation, current, rhs, report);
   accept_iterate();
   // Newton iterations count from the last contact change (release or friction switch); the number of such
   // rounds per increment is capped separately.
@@ -298,7 +300,7 @@ bool StaticAnalysis::solve_increment(const IncrementAttempt& attempt, const std:
       if (changes_at_convergence() == 0) return true;
       if (++rounds > kMaxContactRounds) return false;
       since_change = 0;
-      current = evaluate_residual();
+      current = evaluate_residual(rhs);
       accept_iterate();
       round_start = current.relative;
       continue;
@@ -311,8 +313,8 @@ bool StaticAnalysis::solve_increment(const IncrementAttempt& attempt, const std:
       assembler_->assemble(model_, model_state_, state_, internal_forces_, &values_, damping());
     }
     if (!solve_linear(rhs, linear_tolerance(current.relative))) return false;
-    start = state_;
-    correction = rhs;
+    const std::vector<NodeState> start = state_;
+    const std::vector<double> correction = rhs;
     // Line search on every correction but an attempt's first, which carries the load step (its residual is no
     // measure of progress); after a cut-back the first is searched too (docs/theory.md, "Line search").
     const bool first_correction = report.corrections == 1;
@@ -323,8 +325,8 @@ bool StaticAnalysis::solve_increment(const IncrementAttempt& attempt, const std:
     const auto try_step = [&](double alpha) {
       StepTrial t;
       t.alpha = alpha;
-      t.correction2 = apply_correction(alpha);
-      t.check = evaluate_residual();
+      t.correction2 = apply_correction(start, correction, alpha);
+      t.check = evaluate_residual(rhs);
       return t;
     };
     const auto admissible = [&] {
@@ -334,18 +336,17 @@ bool StaticAnalysis::solve_increment(const IncrementAttempt& attempt, const std:
     };
     const StepLength step = choose_step_length(try_step, admissible, current.relative, line_search_cuts);
     if (step.limited) ++statistics_.limited_corrections;
-    const ResidualCheck trial = step.accepted.check;
     // The displacement test measures what Newton asked for: a correction cut by the step control has not converged
     // because its cut part is short.
     last_correction2_ = step.limited ? std::max(step.accepted.correction2, step.full_correction2) : step.accepted.correction2;
     previous_reference = current.state.force;
-    current = trial;
+    current = step.accepted.check;
     // The divergence check measures an attempt from where its searched corrections start: after the full first one.
     if (first_correction) round_start = std::max(round_start, current.relative);
     accept_iterate();
     // A correction longer than the model itself is divergence, not progress: cut back at once.
     if (last_correction2_ > model_extent2_) return false;
-    increment_displacement2 = std::max(motion2(state_, committed_state_), motion_floor2);
+    increment_displacement2 = std::max(motion2(state_, committed_state_), attempt.motion_floor2);
     report.correction_ratio = increment_displacement2 > 0 ? std::sqrt(last_correction2_ / increment_displacement2) : 0.0;
   }
 }

@@ -141,6 +141,19 @@ class StaticAnalysis {
   };
   bool solve_increment(const IncrementAttempt& attempt, const std::map<ActionKey, std::pair<double, double>>& ramps,
                        IncrementReport& report, const std::function<void(const IncrementReport&)>& on_progress);
+  // The pieces of an increment's Newton solve.
+  // Applied loads at this load fraction into external_ (and the convergence test's list); imposed motions moved.
+  void apply_targets(double step_fraction, const std::map<ActionKey, std::pair<double, double>>& ramps);
+  // The residual at the current state: rhs = -residual on free DOFs, its relative norm and the force test.
+  ResidualCheck evaluate_residual(std::vector<double>& rhs);
+  // state_ = start + alpha * correction (spins for rotations); returns the squared correction norm.
+  double apply_correction(const std::vector<NodeState>& start, const std::vector<double>& correction, double alpha);
+  // The interactions take the current iterate (contact: active set, friction states); the pattern widens if needed.
+  void accept_iterate();
+  // Changes the interactions make to their states at a converged iterate (contacts in tension released...).
+  int changes_at_convergence();
+  // The extrapolated predictor (factor > 0) where it beats the plain one, whose residual is `plain`.
+  ResidualCheck choose_predictor(double extrapolation, ResidualCheck plain, std::vector<double>& rhs, IncrementReport& report);
   void update_slaves();
   void extrapolate_free_motion(double factor);  // adds factor x (committed - previous committed) on free DOFs
   // Squared motion of every node from `from` to `to`, rotations weighted by the mean element length.
