@@ -1,11 +1,11 @@
 #!/usr/bin/python3
-"""Plots the elastoplastic strands of issue 8 from finished runs (paper section 3.1):
+"""Plots the elastoplastic strands from finished runs (paper section 3.1):
 
 - Fig. 4: axial load against strain of the 7-wire strand, fixed and free ends, beside the linear theory;
 - Fig. 5a: von Mises stress along the wires of the 120-wire strand at strain 0.0056 (end of step 1), a
   partial view (z <= 60 mm) drawn from wires.csv at the wires' reference positions;
 - Fig. 5b: axial load against strain of the 120-wire strand beside Judge et al.'s 3D solid model and the
-  experiment (../shared/reference/external/judge2012_120wire_axial.csv).
+  experiment (data/reference/judge2012_120wire_axial.csv).
 
 Usage:
   strandfem run cases/paper/seven_wire_plastic_fixed.yaml -o RUNS/seven_fixed   (same for _free, wire_120_plastic)
@@ -57,7 +57,7 @@ a1.set_ylabel("axial load (kN)")
 a1.set_title("7-wire strand (Table 1), Fig. 4")
 a1.legend(fontsize=8)
 
-judge_path = os.path.join(root, "..", "shared", "reference", "external", "judge2012_120wire_axial.csv")
+judge_path = os.path.join(root, "data", "reference", "judge2012_120wire_axial.csv")
 series = {}
 if os.path.exists(judge_path):
     for line in open(judge_path):
