@@ -3,8 +3,8 @@
 
 - bending cases (a transverse load in history.csv): midspan load V against midspan deflection, every cycle, with
   eq. 3.1's EImax and EImin lines up to the peak load (from the first variant's summary.json that has a loop);
-  beside it, where the variants wrote deflection_curves.csv, the core's deflection at the first peak over the
-  15 % of the span next to the clamp at z = 0 (the paper's 0-150 mm of its 1 m strands), with eq. 3.2's curves;
+  beside it, where the variants wrote deflection_curves.csv, the curve at the first peak as the paper draws it
+  (Figs. 8, 9a, 15a): the rise below the load point over 150 mm from it (the mean of both sides), with eq. 3.2's;
 - where a bending variant ran two cycles or more, a panel as the paper draws its Cardinal loops (Fig. 9b, "the first
   transversal load application" removed): cycle 1's return half and cycle 2's loading half, shifted so that V = 0
   between them lies at zero deflection, labelled with that loop's area (loops.csv, return_loop_area_Nmm), with
@@ -27,7 +27,9 @@ import matplotlib.pyplot as plt
 
 
 def draw_eq31_bounds(ax, folder, variants):
-    """Eq. 3.1's straight lines for EImax and EImin up to the first variant's peak load (summary.json), when known."""
+    """Eq. 3.1's straight lines for EImax and EImin up to the first variant's peak load (summary.json), when known,
+    within the curves' own range (their values at the peak in the legend)."""
+    x_range = ax.get_xlim()
     for v in variants:
         path = os.path.join(folder, v["results"], "summary.json")
         if not os.path.exists(path):
@@ -36,33 +38,39 @@ def draw_eq31_bounds(ax, folder, variants):
         if not loops:
             continue
         loop = loops[0]
-        for key, name, style in (("eq31_ei_max_mm", "EImax (eq. 3.1)", "--"), ("eq31_ei_min_mm", "EImin (eq. 3.1)", ":")):
-            ax.plot([0, loop[key]], [0, loop["peak_load_N"]], style, color="gray", linewidth=1, label=name)
-        return
+        for key, name, style in (("eq31_ei_max_mm", "EImax", "--"), ("eq31_ei_min_mm", "EImin", ":")):
+            ax.plot([0, loop[key]], [0, loop["peak_load_N"]], style, color="gray", linewidth=1,
+                    label=f"{name} (eq. 3.1): {loop[key]:.3g} mm at the peak")
+        break
+    ax.set_xlim(*x_range)
 
 
-def draw_deflection_curves(ax, folder, variants):
-    """The core's deflection at the first peak near the clamp at z = 0, each variant, with eq. 3.2's two curves of
-    the first; False when no variant wrote deflection_curves.csv."""
+def draw_deflection_curves(ax, folder, variants, span=150.0):
+    """The curve at the first peak from the load point over `span` mm (the mean of both sides), each variant, with
+    eq. 3.2's two curves of the first; False when no variant wrote deflection_curves.csv."""
     drawn = False
     for v in variants:
         path = os.path.join(folder, v["results"], "deflection_curves.csv")
         if not os.path.exists(path):
             continue
-        rows = [r for r in csv.DictReader(open(path)) if r["cycle"] == "1"]
+        rows = [r for r in csv.DictReader(open(path)) if r["cycle"] == "1" and abs(float(r["z_from_load_mm"])) <= span + 1e-9]
         if not rows:
             continue
-        length = max(float(r["z_mm"]) for r in rows)
-        near = [r for r in rows if float(r["z_mm"]) <= 0.15 * length + 1e-9]
-        z = [float(r["z_mm"]) for r in near]
+        by_distance = {}
+        for r in rows:
+            by_distance.setdefault(round(abs(float(r["z_from_load_mm"])), 6), []).append(r)
+        distances = sorted(by_distance)
+        mean = lambda key: [sum(float(r[key]) for r in by_distance[d]) / len(by_distance[d]) for d in distances]
         if not drawn:
-            for key, name, style in (("eq32_ei_max_mm", "EImax (eq. 3.2)", "--"), ("eq32_ei_min_mm", "EImin (eq. 3.2)", ":")):
-                ax.plot(z, [float(r[key]) for r in near], style, color="gray", linewidth=1, label=name)
-        ax.plot(z, [float(r["deflection_mm"]) for r in near], marker=".", markersize=3, linewidth=1, label=v["variant"])
+            for key, name, style in (("eq32_ei_max_rise_mm", "EImax (eq. 3.2)", "--"), ("eq32_ei_min_rise_mm", "EImin (eq. 3.2)", ":")):
+                ax.plot(distances, mean(key), style, color="gray", linewidth=1, label=name)
+        ax.plot(distances, mean("rise_from_load_mm"), marker=".", markersize=3, linewidth=1, label=v["variant"])
         drawn = True
     if drawn:
-        ax.set_xlabel("axial position from the clamp at z = 0 (mm)")
-        ax.set_ylabel("core deflection at the first peak (mm)")
+        ax.set_xlim(0, span)
+        ax.set_xlabel("distance from the load point (mm)")
+        ax.set_ylabel("rise below the load point at the first peak (mm)")
+        ax.set_title("the curve as the paper draws it (Figs. 8, 9a, 15a)", fontsize=8)
         ax.grid(alpha=0.3)
         ax.legend(fontsize=7)
     return drawn
