@@ -1,4 +1,6 @@
 #include "strandfem/io/case_file.hpp"
+
+#include "strandfem/io/case_keys.hpp"
 #include "strandfem/io/contact_keys.hpp"
 #include "strandfem/io/load_keys.hpp"
 #include "strandfem/io/solver_keys.hpp"
@@ -30,8 +32,7 @@ class CaseParser {
   CaseParser(const std::string& path, CaseDefinition& out) : reader_(path), out_(out) {}
 
   void parse(const YAML::Node& root) {
-    reader_.check_keys(root, "", {"title", "description", "materials", "strand", "beams", "mesh", "supports", "hubs",
-                                  "steps", "solver", "output", "expected", "contact"});
+    reader_.check_keys(root, "", allowed_keys(""));
     out_.title = root["title"] ? reader_.text(root["title"], "title") : "untitled";
     parse_materials(reader_.require(root, "", "materials"));
     const bool has_strand = root["strand"].IsDefined(), has_beams = root["beams"].IsDefined();
@@ -62,7 +63,7 @@ class CaseParser {
     if (!node.IsMap() || node.size() == 0) reader_.fail(node, "materials", "expected a mapping name -> {E, nu, density}");
     for (const auto& entry : node) {
       const std::string name = entry.first.as<std::string>(), path = "materials." + name;
-      reader_.check_keys(entry.second, path, {"E", "nu", "density", "plasticity"});
+      reader_.check_keys(entry.second, path, allowed_keys("materials.<name>"));
       Material m;
       m.name = name;
       m.youngs_modulus = reader_.positive(reader_.require(entry.second, path, "E"), path + ".E", "MPa");
@@ -73,7 +74,7 @@ class CaseParser {
       if (const YAML::Node p = entry.second["plasticity"]) {
         const std::string pp = path + ".plasticity";
         if (!p.IsMap()) reader_.fail(p, pp, "expected {yield_stress, tangent_modulus} in MPa");
-        reader_.check_keys(p, pp, {"yield_stress", "tangent_modulus", "stress_measure"});
+        reader_.check_keys(p, pp, allowed_keys("materials.<name>.plasticity"));
         BilinearHardening law;
         law.yield_stress = reader_.positive(reader_.require(p, pp, "yield_stress"), pp + ".yield_stress", "MPa");
         law.tangent_modulus = reader_.non_negative(reader_.require(p, pp, "tangent_modulus"), pp + ".tangent_modulus", "MPa");
@@ -107,7 +108,7 @@ class CaseParser {
   }
 
   void parse_strand(const YAML::Node& node, const YAML::Node& mesh) {
-    reader_.check_keys(node, "strand", {"length", "layers", "ends", "clamp_length"});
+    reader_.check_keys(node, "strand", allowed_keys("strand"));
     StrandSpec spec;
     spec.materials = materials_;
     spec.length = reader_.positive(reader_.require(node, "strand", "length"), "strand.length", "mm");
@@ -117,7 +118,7 @@ class CaseParser {
     for (std::size_t i = 0; i < layers.size(); ++i) {
       const YAML::Node l = layers[i];
       const std::string path = list_item("strand.layers", i);
-      reader_.check_keys(l, path, {"wires", "diameter", "material", "lay_angle", "lay_direction", "start_angle", "start_angles"});
+      reader_.check_keys(l, path, allowed_keys("strand.layers[i]"));
       LayerSpec layer;
       layer.wires = reader_.integer(reader_.require(l, path, "wires"), path + ".wires", 1, kMaxWiresPerLayer);
       layer.wire_diameter = reader_.positive(reader_.require(l, path, "diameter"), path + ".diameter", "mm");
@@ -155,7 +156,7 @@ class CaseParser {
     }
     out_.end_type = node["ends"] ? reader_.choice(node["ends"], "strand.ends", {"fixed", "free"}) : "fixed";
     if (mesh) {
-      reader_.check_keys(mesh, "mesh", {"element_length", "elements_per_wire"});
+      reader_.check_keys(mesh, "mesh", allowed_keys("mesh"));
       if (mesh["element_length"] && mesh["elements_per_wire"])
         reader_.fail(mesh, "mesh", "give either element_length or elements_per_wire, not both");
       if (mesh["element_length"]) out_.mesh_spec.element_length = reader_.positive(mesh["element_length"], "mesh.element_length", "mm");
@@ -197,14 +198,14 @@ class CaseParser {
     for (std::size_t i = 0; i < node.size(); ++i) {
       const YAML::Node b = node[i];
       const std::string path = list_item("beams", i);
-      reader_.check_keys(b, path, {"name", "material", "section", "shape", "elements"});
+      reader_.check_keys(b, path, allowed_keys("beams[i]"));
       BeamLineSpec line;
       line.name = reader_.text(reader_.require(b, path, "name"), path + ".name");
       for (const MeshWire& w : out_.model.mesh.wires)
         if (w.name == line.name) reader_.fail(b["name"], path + ".name", "duplicate beam name '" + line.name + "'");
       const Material& mat = material(reader_.require(b, path, "material"), path + ".material");
       const YAML::Node s = reader_.require(b, path, "section");
-      reader_.check_keys(s, path + ".section", {"diameter", "area", "inertia_2", "inertia_3", "torsion_constant", "shear_factor"});
+      reader_.check_keys(s, path + ".section", allowed_keys("beams[i].section"));
       SectionGeometry geometry;
       if (s["diameter"]) {
         if (s.size() != 1) reader_.fail(s, path + ".section", "a circular section takes only 'diameter'");
@@ -241,7 +242,7 @@ class CaseParser {
     Mesh& m = out_.model.mesh;
     for (std::size_t i = 0; i < node.size(); ++i) {
       const std::string path = list_item("hubs", i);
-      reader_.check_keys(node[i], path, {"name", "position", "links"});
+      reader_.check_keys(node[i], path, allowed_keys("hubs[i]"));
       const std::string name = reader_.text(reader_.require(node[i], path, "name"), path + ".name");
       if (hubs_.count(name)) reader_.fail(node[i]["name"], path + ".name", "duplicate hub name '" + name + "'");
       const auto p = reader_.numbers(reader_.require(node[i], path, "position"), path + ".position", 3);
@@ -278,14 +279,14 @@ class CaseParser {
       return Vec3(v[0], v[1], v[2]);
     };
     if (type == "straight") {
-      reader_.check_keys(s, path, {"type", "start", "end", "normal"});
+      reader_.check_keys(s, path, allowed_keys("beams[i].shape (straight)"));
       line.shape = BeamLineSpec::kStraight;
       line.start = vec("start");
       line.end = vec("end");
       if ((line.end - line.start).norm() <= 0) reader_.fail(s, path, "start and end coincide");
       if (s["normal"]) line.normal = vec("normal");
     } else if (type == "arc") {
-      reader_.check_keys(s, path, {"type", "center", "radius", "start_angle", "end_angle", "axis"});
+      reader_.check_keys(s, path, allowed_keys("beams[i].shape (arc)"));
       line.shape = BeamLineSpec::kArc;
       line.center = vec("center");
       line.radius = reader_.positive(reader_.require(s, path, "radius"), path + ".radius", "mm");
@@ -294,7 +295,7 @@ class CaseParser {
       if (s["axis"]) line.axis = vec("axis");
       if (line.start_angle == line.end_angle) reader_.fail(s, path, "start_angle equals end_angle");
     } else {
-      reader_.check_keys(s, path, {"type", "radius", "lay_angle", "length", "lay_direction", "start_angle"});
+      reader_.check_keys(s, path, allowed_keys("beams[i].shape (helix)"));
       line.shape = BeamLineSpec::kHelix;
       line.radius = reader_.positive(reader_.require(s, path, "radius"), path + ".radius", "mm");
       const double angle = reader_.number(reader_.require(s, path, "lay_angle"), path + ".lay_angle");
@@ -311,7 +312,7 @@ class CaseParser {
   int node_at(const YAML::Node& n, const std::string& path) {
     const Mesh& m = out_.model.mesh;
     if (out_.strand) {
-      reader_.check_keys(n, path, {"core", "core_z"});
+      reader_.check_keys(n, path, allowed_keys("selector (strands)"));
       if (n["core"] && n["core_z"]) reader_.fail(n, path, "give core or core_z, not both");
       const MeshWire& core = m.wires[0];
       if (n["core"]) return reader_.choice(n["core"], path + ".core", {"start", "end"}) == "start" ? core.nodes.front() : core.nodes.back();
@@ -322,7 +323,7 @@ class CaseParser {
         if (std::abs(m.nodes[node].reference.position.z() - z) < std::abs(m.nodes[best].reference.position.z() - z)) best = node;
       return best;
     }
-    reader_.check_keys(n, path, {"beam", "point", "node", "hub"});
+    reader_.check_keys(n, path, allowed_keys("selector (beams)"));
     if (n["hub"]) {
       const std::string hub = reader_.text(n["hub"], path + ".hub");
       if (!hubs_.count(hub)) reader_.fail(n["hub"], path + ".hub", "no hub named '" + hub + "'");
@@ -345,8 +346,7 @@ class CaseParser {
   }
 
   void parse_output(const YAML::Node& node) {
-    reader_.check_keys(node, "output", {"every", "vtu", "monitor", "contacts", "contacts_every", "wires", "checkpoint", "clamp_edge_offset",
-                                          "steady_tolerance"});
+    reader_.check_keys(node, "output", allowed_keys("output"));
     if (node["steady_tolerance"]) {
       const double tolerance = reader_.positive(node["steady_tolerance"], "output.steady_tolerance", "fraction");
       if (tolerance >= 1)

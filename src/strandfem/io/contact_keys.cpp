@@ -1,5 +1,7 @@
 #include "strandfem/io/contact_keys.hpp"
 
+#include "strandfem/io/case_keys.hpp"
+
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -24,12 +26,7 @@ std::pair<std::string, std::string> material_pair(const YamlReader& reader, cons
 
 ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Node& node,
                                        const std::map<std::string, Material>& materials, bool strand) {
-  reader.check_keys(node, "contact", {"enabled", "friction", "friction_pairs", "friction_zones", "orthotropy_ratio",
-                                       "friction_direction",
-                                       "normal_factor", "tangential_factor", "normal_multiplier", "tangential_multiplier",
-                                       "search_margin", "line_contact_angle", "line_points", "initial_overlap", "touch_tolerance", "pattern_margin", "axis",
-                                       "tangential_penalty", "elastic_slip", "normal_smoothing",
-                                       "stabilization"});
+  reader.check_keys(node, "contact", allowed_keys("contact"));
   ContactSettings c;
   c.enabled = node["enabled"] ? reader.boolean(node["enabled"], "contact.enabled") : true;
   auto friction = [&](const YAML::Node& n, const std::string& path) {
@@ -49,7 +46,7 @@ ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Nod
     if (!pairs.IsSequence()) reader.fail(pairs, "contact.friction_pairs", "expected a list of {materials: [a, b], mu}");
     for (std::size_t i = 0; i < pairs.size(); ++i) {
       const std::string path = list_item("contact.friction_pairs", i);
-      reader.check_keys(pairs[i], path, {"materials", "mu", "orthotropy_ratio", "contacts"});
+      reader.check_keys(pairs[i], path, allowed_keys("contact.friction_pairs[i]"));
       MaterialPairFriction f;
       std::tie(f.material_a, f.material_b) =
           material_pair(reader, reader.require(pairs[i], path, "materials"), path + ".materials", materials, "expected two material names");
@@ -64,7 +61,7 @@ ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Nod
     if (!zones.IsSequence()) reader.fail(zones, "contact.friction_zones", "expected a list of {z: [z_min, z_max], mu}");
     for (std::size_t i = 0; i < zones.size(); ++i) {
       const std::string path = list_item("contact.friction_zones", i);
-      reader.check_keys(zones[i], path, {"z", "mu", "materials", "contacts"});
+      reader.check_keys(zones[i], path, allowed_keys("contact.friction_zones[i]"));
       const auto z = reader.numbers(reader.require(zones[i], path, "z"), path + ".z", 2);
       if (!(z[1] > z[0])) reader.fail(zones[i]["z"], path + ".z", "expected [z_min, z_max] with z_max > z_min (mm)");
       FrictionZone zone{z[0], z[1], friction(reader.require(zones[i], path, "mu"), path + ".mu"), {}, interface(zones[i], path)};

@@ -1,5 +1,7 @@
 #include "strandfem/io/load_keys.hpp"
 
+#include "strandfem/io/case_keys.hpp"
+
 #include <cmath>
 #include <numbers>
 
@@ -22,7 +24,7 @@ void LoadKeys::parse_supports(const YAML::Node& node) {
   if (!node.IsSequence()) reader_.fail(node, "supports", "expected a list of {at, fix}");
   for (std::size_t i = 0; i < node.size(); ++i) {
     const std::string path = list_item("supports", i);
-    reader_.check_keys(node[i], path, {"at", "fix"});
+    reader_.check_keys(node[i], path, allowed_keys("supports[i]"));
     Support s;
     s.node = node_at_(reader_.require(node[i], path, "at"), path + ".at");
     const YAML::Node fix = reader_.require(node[i], path, "fix");
@@ -71,9 +73,9 @@ void LoadKeys::parse_steps(const YAML::Node& node, const StrandModelParts* stran
     const YAML::Node s = node[i];
     const std::string path = list_item("steps", i);
     if (out_.strand)
-      reader_.check_keys(s, path, {"name", "increments", "cycles", "axial_strain", "axial_force", "torque", "twist", "transverse_force", "forces", "motions"});
+      reader_.check_keys(s, path, allowed_keys("steps[i]"));
     else
-      reader_.check_keys(s, path, {"name", "increments", "cycles", "forces", "motions"});
+      reader_.check_keys(s, path, allowed_keys("steps[i] (beams)"));
     LoadStep step;
     step.name = s["name"] ? reader_.text(s["name"], path + ".name") : "step" + std::to_string(i + 1);
     step.increments = reader_.integer(reader_.require(s, path, "increments"), path + ".increments", 1, kMaxIncrementsPerStep);
@@ -105,7 +107,7 @@ void LoadKeys::parse_strand_actions(const YAML::Node& s, const std::string& path
   if (s["transverse_force"]) {
     const YAML::Node t = s["transverse_force"];
     const std::string tp = path + ".transverse_force";
-    reader_.check_keys(t, tp, {"value", "z", "direction", "through", "saddle_length"});
+    reader_.check_keys(t, tp, allowed_keys("steps[i].transverse_force"));
     const double value = reader_.number(reader_.require(t, tp, "value"), tp + ".value");
     YAML::Node selector;
     selector["core_z"] = reader_.require(t, tp, "z");
@@ -140,7 +142,7 @@ void LoadKeys::parse_forces(const YAML::Node& node, const std::string& path, int
   if (!node.IsSequence()) reader_.fail(node, path, "expected a list of {at, force, moment}");
   for (std::size_t i = 0; i < node.size(); ++i) {
     const std::string p = list_item(path, i);
-    reader_.check_keys(node[i], p, {"at", "force", "moment"});
+    reader_.check_keys(node[i], p, allowed_keys("steps[i].forces[i]"));
     const int n = node_at_(reader_.require(node[i], p, "at"), p + ".at");
     if (!node[i]["force"] && !node[i]["moment"]) reader_.fail(node[i], p, "expected 'force' and/or 'moment'");
     for (const char* key : {"force", "moment"}) {
@@ -156,7 +158,7 @@ void LoadKeys::parse_motions(const YAML::Node& node, const std::string& path, in
   if (!node.IsSequence()) reader_.fail(node, path, "expected a list of {at, ux.., rz (deg)}");
   for (std::size_t i = 0; i < node.size(); ++i) {
     const std::string p = list_item(path, i);
-    reader_.check_keys(node[i], p, {"at", "ux", "uy", "uz", "rx", "ry", "rz"});
+    reader_.check_keys(node[i], p, allowed_keys("steps[i].motions[i]"));
     const int n = node_at_(reader_.require(node[i], p, "at"), p + ".at");
     for (int c = 0; c < 6; ++c)
       if (const YAML::Node v = node[i][kComponentNames[c]])

@@ -1,5 +1,7 @@
 #include "strandfem/io/solver_keys.hpp"
 
+#include "strandfem/io/case_keys.hpp"
+
 #include <limits>
 
 namespace strandfem {
@@ -8,10 +10,7 @@ constexpr int kMaxThreadsAsked = std::numeric_limits<int>::max();  // the progra
 }  // namespace
 
 void parse_solver_options(const YamlReader& reader, const YAML::Node& node, SolverOptions& o) {
-  reader.check_keys(node, "solver", {"force_tolerance", "moment_tolerance", "displacement_tolerance", "load_tolerance", "max_iterations",
-                                     "max_cutbacks", "line_search_cuts", "linear_solver", "threads",
-                                     "krylov_iterations", "refinement_iterations", "krylov_tolerance", "newton_forcing", "extrapolate",
-                                     "stabilization", "stabilization_ramp_off", "automatic_stabilization"});
+  reader.check_keys(node, "solver", allowed_keys("solver"));
   if (node["force_tolerance"]) o.force_tolerance = reader.positive(node["force_tolerance"], "solver.force_tolerance", "-");
   if (node["moment_tolerance"]) o.moment_tolerance = reader.positive(node["moment_tolerance"], "solver.moment_tolerance", "-");
   if (node["displacement_tolerance"]) o.displacement_tolerance = reader.positive(node["displacement_tolerance"], "solver.displacement_tolerance", "-");

@@ -12,7 +12,7 @@ void YamlReader::fail(const YAML::Node& node, const std::string& path, const std
 }
 
 void YamlReader::check_keys(const YAML::Node& map, const std::string& path,
-                            std::initializer_list<const char*> allowed) const {
+                            const std::vector<const char*>& allowed) const {
   if (!map.IsMap()) fail(map, path, "expected a mapping of keys");
   for (const auto& entry : map) {
     const std::string key = entry.first.as<std::string>();

@@ -28,7 +28,7 @@ class YamlReader {
 
   [[noreturn]] void fail(const YAML::Node& node, const std::string& path, const std::string& what) const;
   // Rejects keys outside `allowed` (typos must not become silent defaults).
-  void check_keys(const YAML::Node& map, const std::string& path, std::initializer_list<const char*> allowed) const;
+  void check_keys(const YAML::Node& map, const std::string& path, const std::vector<const char*>& allowed) const;
   // The value of a required key of `map` (which must be a mapping).
   YAML::Node require(const YAML::Node& map, const std::string& path, const char* key) const;
 

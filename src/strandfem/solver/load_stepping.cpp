@@ -142,8 +142,9 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
       // Ramped off: the factor falls linearly from its full value at the step's start to zero at its end.
       stabilization_factor_ = model_.options.stabilization * (model_.options.stabilization_ramp_off ? 1.0 - p.fraction : 1.0);
       if (p.stabilized) stabilization_factor_ = std::max(stabilization_factor_, kAutomaticViscousStabilization);
-      // The attempts after a failure search their corrections, where the case runs without line search.
-      const bool searched = cutbacks > 0 && model_.options.line_search_cuts < kRecoveryLineSearchCuts;
+      // The attempts after a failure, and every attempt the automatic stabilization carries, search their
+      // corrections, where the case runs without line search.
+      const bool searched = (cutbacks > 0 || p.stabilized) && model_.options.line_search_cuts < kRecoveryLineSearchCuts;
       // Within a ramp, or across ramps that load the same way, there is a last increment to continue from; the first
       // increment of a ramp that turns the loading has none (p.last_size 0).
       const bool loading_continues = p.last_size > 0;

@@ -1,0 +1,50 @@
+#include "strandfem/io/case_keys.hpp"
+
+#include <stdexcept>
+
+namespace strandfem {
+
+const std::vector<CaseKeyGroup>& case_key_table() {
+  static const std::vector<CaseKeyGroup> table = {
+      {"", {"title", "description", "expected", "materials", "strand", "beams", "mesh", "supports", "hubs", "steps", "solver", "output",
+            "contact"}},
+      {"materials.<name>", {"E", "nu", "density", "plasticity"}},
+      {"materials.<name>.plasticity", {"yield_stress", "tangent_modulus", "stress_measure"}},
+      {"strand", {"length", "ends", "clamp_length", "layers"}},
+      {"strand.layers[i]", {"wires", "diameter", "material", "lay_angle", "lay_direction", "start_angle", "start_angles"}},
+      {"mesh", {"element_length", "elements_per_wire"}},
+      {"beams[i]", {"name", "material", "section", "shape", "elements"}},
+      {"beams[i].section", {"diameter", "area", "inertia_2", "inertia_3", "torsion_constant", "shear_factor"}},
+      {"beams[i].shape (straight)", {"type", "start", "end", "normal"}},
+      {"beams[i].shape (arc)", {"type", "center", "radius", "start_angle", "end_angle", "axis"}},
+      {"beams[i].shape (helix)", {"type", "radius", "lay_angle", "length", "lay_direction", "start_angle"}},
+      {"hubs[i]", {"name", "position", "links"}},
+      {"selector (strands)", {"core", "core_z"}},
+      {"selector (beams)", {"beam", "point", "node", "hub"}},
+      {"supports[i]", {"at", "fix"}},
+      {"steps[i]", {"name", "increments", "cycles", "axial_strain", "axial_force", "torque", "twist", "transverse_force", "forces", "motions"}},
+      {"steps[i] (beams)", {"name", "increments", "cycles", "forces", "motions"}},
+      {"steps[i].transverse_force", {"value", "z", "direction", "through", "saddle_length"}},
+      {"steps[i].forces[i]", {"at", "force", "moment"}},
+      {"steps[i].motions[i]", {"at", "ux", "uy", "uz", "rx", "ry", "rz"}},
+      {"output", {"every", "vtu", "monitor", "contacts", "contacts_every", "wires", "checkpoint", "clamp_edge_offset", "steady_tolerance"}},
+      {"contact", {"enabled", "friction", "friction_pairs", "friction_zones", "orthotropy_ratio", "friction_direction", "axis", "normal_factor",
+                   "normal_multiplier", "tangential_penalty", "elastic_slip", "tangential_factor", "tangential_multiplier", "search_margin",
+                   "line_contact_angle", "line_points", "initial_overlap", "touch_tolerance", "normal_smoothing", "stabilization",
+                   "pattern_margin"}},
+      {"contact.friction_pairs[i]", {"materials", "mu", "orthotropy_ratio", "contacts"}},
+      {"contact.friction_zones[i]", {"z", "mu", "materials", "contacts"}},
+      {"solver", {"force_tolerance", "moment_tolerance", "displacement_tolerance", "load_tolerance", "max_iterations", "max_cutbacks",
+                  "line_search_cuts", "linear_solver", "krylov_iterations", "refinement_iterations", "krylov_tolerance", "newton_forcing",
+                  "extrapolate", "stabilization", "stabilization_ramp_off", "automatic_stabilization", "threads"}},
+  };
+  return table;
+}
+
+const std::vector<const char*>& allowed_keys(const std::string& mapping) {
+  for (const CaseKeyGroup& group : case_key_table())
+    if (group.mapping == mapping) return group.keys;
+  throw std::logic_error("case_key_table has no mapping '" + mapping + "'");
+}
+
+}  // namespace strandfem

@@ -1,0 +1,23 @@
+// The keys a case file may hold, mapping by mapping: the one table the reader checks every mapping against and
+// docs/case-files.md lists (a test compares the two).
+#pragma once
+#include <string>
+#include <vector>
+
+namespace strandfem {
+
+// A mapping of a case file and the keys it may hold. Mappings are named as the documentation writes paths:
+// "strand.layers[i]", "materials.<name>.plasticity", "steps[i].transverse_force"; a mapping whose keys depend on
+// the case's kind or on a `type` adds it in parentheses ("steps[i] (beams)", "beams[i].shape (arc)"), and
+// "selector (strands)" / "selector (beams)" are the node selectors of `at`, hub `links` and `output.monitor`.
+struct CaseKeyGroup {
+  std::string mapping;
+  std::vector<const char*> keys;
+};
+
+const std::vector<CaseKeyGroup>& case_key_table();
+
+// The keys of one mapping of the table; std::logic_error for a mapping the table does not have (a bug).
+const std::vector<const char*>& allowed_keys(const std::string& mapping);
+
+}  // namespace strandfem
