@@ -50,8 +50,8 @@ std::string StaticAnalysis::stop_message(const std::string& step_name, int ramp,
                 nominal * std::ldexp(1.0, -opt.max_cutbacks));
   message += text;
   if (opt.automatic_stabilization)
-    message += "  then the automatic stabilization (viscous and contact) for the rest of the step, from a quarter of the nominal "
-               "increment, with the same halvings.\n";
+    message += "  then the automatic stabilization (viscous and contact, with line search) for the rest of the step, from a "
+               "quarter of the nominal increment, with the same halvings.\n";
   message +=
       "  check: a load or motion beyond what the strand can carry at this point (a wire yielding through, or sliding "
       "without end); wires that overlap in the reference geometry (`strandfem info` gives each layer's "
@@ -160,8 +160,9 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
       const IncrementAttempt attempt{target, extrapolation, idle_step, loading_continues, motion_floor2, cutbacks > 0,
                                      searched ? kRecoveryLineSearchCuts : model_.options.line_search_cuts};
       if (solve_increment(attempt, ramps, report, on_progress)) {
-        if (searched) ++statistics_.searched_recoveries;
-        report.searched_recovery = searched;
+        const bool recovered_by_search = searched && !p.stabilized;  // the stabilized mode searches as part of it
+        if (recovered_by_search) ++statistics_.searched_recoveries;
+        report.searched_recovery = recovered_by_search;
         report.stabilized = p.stabilized;
         if (retrying_plain) p.extrapolation_failed = true;
         if (report.force_only) ++statistics_.force_only_acceptances;

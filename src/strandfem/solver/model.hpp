@@ -40,7 +40,8 @@ struct SolverOptions {
   double stabilization = 0;
   bool stabilization_ramp_off = true;
   // Recovery aid: when an increment cannot converge after its cut-backs, viscous (0.01) and contact (1e-4)
-  // stabilization switch on for the rest of the step, and the step goes on from a quarter of its nominal increment.
+  // stabilization and line search switch on for the rest of the step, which goes on from a quarter of its nominal
+  // increment.
   bool automatic_stabilization = true;
   std::string linear_solver = "mumps_single";  // mumps_single (single-precision factors refined by GMRES) | mumps | umfpack
   int threads = 0;                        // OpenMP threads for element evaluation; 0 = OpenMP default
