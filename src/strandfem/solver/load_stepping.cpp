@@ -9,7 +9,7 @@
 namespace strandfem {
 namespace {
 constexpr int kEasyIncrementsBeforeRegrowth = 3;
-constexpr int kRecoveryLineSearchCuts = 4;  // halvings per correction on the attempts after a failed one
+constexpr int kRecoveryLineSearchCuts = 4;  // halvings per correction after a failed attempt, and while stabilized
 // The automatic stabilization: viscous damping of this fraction of the wires' elastic stiffness, and contact springs
 // of this fraction of the normal penalty, on the motion since the last converged increment (docs/theory.md,
 // "Automatic stabilization"); the step goes on from this share of its nominal increment.
