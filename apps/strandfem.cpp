@@ -104,12 +104,17 @@ class RunProgress {
   std::chrono::steady_clock::time_point first_time_;
 };
 
+// A results folder's summary.json; an empty object where there is none or it cannot be read.
+nlohmann::json read_summary(const std::filesystem::path& folder) {
+  std::ifstream in(folder / "summary.json");
+  nlohmann::json summary = nlohmann::json::parse(in, nullptr, false);
+  return summary.is_discarded() ? nlohmann::json::object() : summary;
+}
 
 // The end-of-run report on stdout, from the summary.json the run has just written.
 void print_report(const std::string& output_dir) {
-  std::ifstream in(std::filesystem::path(output_dir) / "summary.json");
-  const nlohmann::json summary = nlohmann::json::parse(in, nullptr, false);
-  if (summary.is_discarded()) return;
+  const nlohmann::json summary = read_summary(output_dir);
+  if (summary.empty()) return;
   std::cout << strandfem::end_of_run_report(summary) << "results in " << output_dir << "\n";
 }
 
@@ -138,8 +143,9 @@ int run_case_file(const std::string& case_path, const std::string& output_dir, i
   RunProgress progress(c.model.steps);
   options.on_increment = [&](const strandfem::IncrementReport& r) {
     if (!quiet)
-      std::cerr << "step " << r.origin.step + 1 << "/" << step_count << " '" << r.step_name << "' increment " << r.increment << " (fraction " << r.step_fraction << increment_size_note(r) << "): " << r.iterations
-                << " iterations, residual " << r.residual_norm << progress.note(r) << "\n";
+      std::cerr << "step " << r.origin.step + 1 << "/" << step_count << " '" << r.step_name << "' increment " << r.increment
+                << " (fraction " << r.step_fraction << increment_size_note(r) << "): " << r.iterations << " iterations, residual "
+                << r.residual_norm << progress.note(r) << "\n";
   };
   if (verbose)
     options.on_progress = [&](const strandfem::IncrementReport& r) {
@@ -235,12 +241,9 @@ int run_sweep(const std::vector<std::string>& cases, const std::string& key, con
   const std::string table = (fs::path(output_dir) / "sweep.csv").string();
   std::ofstream csv(table);
   csv << "variant,key,value,case_file,results,exit_code," << strandfem::sweep_result_header() << "\n";
-  for (const Variant& v : variants) {
-    std::ifstream in(fs::path(output_dir) / v.name / "summary.json");
-    const nlohmann::json summary = nlohmann::json::parse(in, nullptr, false);
+  for (const Variant& v : variants)
     csv << v.name << "," << key << "," << v.value << "," << v.case_file << "," << v.name << "," << v.exit_code << ","
-        << strandfem::sweep_result_fields(summary.is_discarded() ? nlohmann::json::object() : summary) << "\n";
-  }
+        << strandfem::sweep_result_fields(read_summary(fs::path(output_dir) / v.name)) << "\n";
   if (!csv) throw strandfem::OutputError("cannot write " + table);
   csv.close();
   strandfem_app::draw_figures("plot_sweep.py", output_dir);
