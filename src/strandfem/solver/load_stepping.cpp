@@ -8,18 +8,15 @@
 
 namespace strandfem {
 namespace {
-constexpr int kEasyIncrementsBeforeRegrowth = 3;
 constexpr int kRecoveryLineSearchCuts = 4;  // halvings per correction after a failed attempt, and while stabilized
 // The automatic stabilization: viscous damping of this fraction of the wires' elastic stiffness, and contact springs
 // of this fraction of the normal penalty, on the motion since the last converged increment (docs/theory.md,
-// "Automatic stabilization"); the step goes on from this share of its nominal increment.
+// "Automatic stabilization"); IncrementController decides when it acts.
 constexpr double kAutomaticViscousStabilization = 0.01;
 constexpr double kAutomaticContactStabilization = 1e-4;
-constexpr double kStabilizedRestartSize = 0.25;
 }  // namespace
 
 void StaticAnalysis::set_automatic_stabilization(bool on) {
-  progress_.stabilized = on;
   if (on && !stabilization_.initialized()) {
     std::vector<NodeState> reference;
     for (const MeshNode& n : model_.mesh.nodes) reference.push_back(n.reference);
@@ -69,6 +66,7 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
                                    const std::function<void(const IncrementReport&)>& on_progress) {
   const std::vector<LoadRamp> protocol = expand_load_steps(model_.steps);
   Progress& p = progress_;  // a restored checkpoint resumes mid-step, with the sizes it had
+  IncrementController& control = p.control;
   while (p.ramp < static_cast<int>(protocol.size())) {
     const LoadRamp& step = protocol[p.ramp];
     std::map<ActionKey, std::pair<double, double>> ramps;
@@ -78,7 +76,6 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
       const double start = p.totals.count(key) ? p.totals[key] : 0.0;
       ramps[key] = {start, a.value};
     }
-    const double nominal = 1.0 / std::max(1, step.increments);
     bool idle_step = true;  // no action changes over the step
     bool moves_driven_dofs = false;  // an imposed motion changes over the step
     for (const auto& [key, ramp] : ramps) {
@@ -87,42 +84,24 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
     }
     if (!p.in_step) {
       p.in_step = true;
-      if (p.stabilized) set_automatic_stabilization(false);
+      if (control.sizes().stabilized) set_automatic_stabilization(false);
       convergence_.begin_step(convergence_.load_norms(dofs_, committed_forces_, committed_external_));
-      p.fraction = 0;
-      p.size = p.largest_size = nominal;
-      p.easy_at_cap = p.converged_increments = 0;
-      p.extrapolation_failed = false;
-      // A step that goes on loading the same way as the previous one (every action changes by the same positive
-      // multiple c of its previous change) extrapolates from that step's last increment, which measures 1/c of it.
-      p.last_size = 0;
-      double c = 0, largest = 0;
-      for (const auto& [key, ramp] : ramps) {
-        const double before = p.previous_change.count(key) ? p.previous_change[key] : 0.0;
-        if (std::abs(before) > largest) largest = std::abs(before), c = (ramp.second - ramp.first) / before;
-      }
-      bool proportional = c > 0;
-      for (const auto& [key, ramp] : ramps) {
-        const double before = p.previous_change.count(key) ? p.previous_change[key] : 0.0, now = ramp.second - ramp.first;
-        if (std::abs(now - c * before) > 1e-9 * (std::abs(now) + std::abs(before))) proportional = false;
-      }
-      if (proportional) p.last_size = p.previous_last_size / c;
+      control.begin_step(step.increments, carried_last_size(ramps));
+    } else {
+      control.resume_step(step.increments);
     }
-    int cutbacks = 0;
-    bool plain_retry = false;  // the next attempt repeats a failed extrapolated one without extrapolation
-    while (p.fraction < 1.0 - 1e-12) {
-      // Never past the next point of the nominal grid (k / increments): after cut-backs the increments land on
-      // the load levels the case asked for again.
-      const double next_nominal = nominal * (std::floor(p.fraction / nominal + 1e-9) + 1.0);
-      const double target = std::min({1.0, p.fraction + p.size, next_nominal});
+    const double nominal = control.nominal();
+    while (!control.step_done()) {
+      const IncrementController::Sizes& c = control.sizes();
+      const double target = control.target();
       IncrementReport report;
       report.step = p.ramp;
       report.step_name = step.name;
       report.origin = step.origin;
-      report.increment = p.converged_increments + 1;
+      report.increment = c.converged_increments + 1;
       report.step_fraction = target;
-      report.cutbacks = cutbacks;
-      report.relative_size = (target - p.fraction) / nominal;
+      report.cutbacks = control.cutbacks();
+      report.relative_size = (target - c.fraction) / nominal;
       // Extrapolate within a step or across steps that load the same way (not across a reversal), and not on
       // the retry of a failed increment: a poor predictor must not cost the whole cut-back sequence. Once a plain
       // retry has converged where the extrapolated predictor failed, the step goes on without extrapolating: past
@@ -132,39 +111,35 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
       // plain predictor's first correction, from a converged state with its tangent, is the tangent predictor
       // (on Cardinal's tension ramp the extrapolated predictor takes two to four times the corrections).
       // Where the step moves driven DOFs the plain predictor strains the elements next to them alone (docs/theory.md).
-      const bool secant_predictor = moves_driven_dofs || !(model_.options.stabilization > 0 || p.stabilized);
-      const double extrapolation = model_.options.extrapolate && secant_predictor && !idle_step && p.last_size > 0 &&
-                                           cutbacks == 0 && !plain_retry && !p.extrapolation_failed
-                                       ? (target - p.fraction) / p.last_size
+      const bool secant_predictor = moves_driven_dofs || !(model_.options.stabilization > 0 || c.stabilized);
+      const double extrapolation = model_.options.extrapolate && secant_predictor && !idle_step && control.may_extrapolate()
+                                       ? (target - c.fraction) / c.last_size
                                        : 0.0;
-      const bool retrying_plain = plain_retry;
-      plain_retry = false;
       // Ramped off: the factor falls linearly from its full value at the step's start to zero at its end.
-      stabilization_factor_ = model_.options.stabilization * (model_.options.stabilization_ramp_off ? 1.0 - p.fraction : 1.0);
-      if (p.stabilized) stabilization_factor_ = std::max(stabilization_factor_, kAutomaticViscousStabilization);
+      stabilization_factor_ = model_.options.stabilization * (model_.options.stabilization_ramp_off ? 1.0 - c.fraction : 1.0);
+      if (c.stabilized) stabilization_factor_ = std::max(stabilization_factor_, kAutomaticViscousStabilization);
       // The attempts after a failure, and every attempt the automatic stabilization carries, search their
       // corrections, where the case runs without line search.
-      const bool searched = (cutbacks > 0 || p.stabilized) && model_.options.line_search_cuts < kRecoveryLineSearchCuts;
+      const bool searched = (control.cutbacks() > 0 || c.stabilized) && model_.options.line_search_cuts < kRecoveryLineSearchCuts;
       // Within a ramp, or across ramps that load the same way, there is a last increment to continue from; the first
-      // increment of a ramp that turns the loading has none (p.last_size 0).
-      const bool loading_continues = p.last_size > 0;
+      // increment of a ramp that turns the loading has none (last_size 0).
+      const bool loading_continues = c.last_size > 0;
       // A cut increment's corrections are measured against the motion a nominal increment would have (the last
       // converged one's, scaled to the nominal size), not against its own: halving an increment must not tighten the
       // displacement test in absolute terms, or contact chatter of a fixed size (stick/slip, the normal band) keeps
       // cut increments from converging at all (docs/theory.md, "Displacement test of a cut increment").
       const double motion_floor2 =
           loading_continues && !previous_committed_state_.empty()
-              ? cut_increment_motion_floor2(motion2(committed_state_, previous_committed_state_), p.last_size,
-                                            target - p.fraction, nominal)
+              ? cut_increment_motion_floor2(motion2(committed_state_, previous_committed_state_), c.last_size,
+                                            target - c.fraction, nominal)
               : 0.0;
-      const IncrementAttempt attempt{target, extrapolation, idle_step, loading_continues, motion_floor2, cutbacks > 0,
+      const IncrementAttempt attempt{target, extrapolation, idle_step, loading_continues, motion_floor2, control.cutbacks() > 0,
                                      searched ? kRecoveryLineSearchCuts : model_.options.line_search_cuts};
       if (solve_increment(attempt, ramps, report, on_progress)) {
-        const bool recovered_by_search = searched && !p.stabilized;  // the stabilized mode searches as part of it
+        const bool recovered_by_search = searched && !c.stabilized;  // the stabilized mode searches as part of it
         if (recovered_by_search) ++statistics_.searched_recoveries;
         report.searched_recovery = recovered_by_search;
-        report.stabilized = p.stabilized;
-        if (retrying_plain) p.extrapolation_failed = true;
+        report.stabilized = c.stabilized;
         if (report.force_only) ++statistics_.force_only_acceptances;
         bool pattern_changed = false;
         {
@@ -178,66 +153,52 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
         previous_committed_state_ = committed_state_;
         committed_state_ = state_;
         committed_motion_ = applied_motion_;
-        p.last_size = target - p.fraction;
-        p.fraction = target;
-        ++p.converged_increments;
-        // Regrow after an easy increment, but not straight back to a size that just failed (each retry that
-        // fails costs a whole failed increment): that cap doubles after kEasyIncrementsBeforeRegrowth easy
-        // increments at it, never beyond the nominal size.
-        // Easy: converged within a quarter of the allowed Newton corrections. Contact rounds do not count (they
-        // re-evaluate the residual only), and elastoplastic strands converge linearly in about 6 corrections
-        // at any increment size (fibres crossing the yield surface), so larger increments cost no more.
-        const bool easy = report.corrections <= std::max(2, model_.options.max_iterations / 4);
-        p.easy_at_cap = easy && p.size >= p.largest_size ? p.easy_at_cap + 1 : 0;
-        if (p.easy_at_cap >= kEasyIncrementsBeforeRegrowth && p.largest_size < nominal) {
-          p.largest_size = std::min(nominal, 2.0 * p.largest_size);
-          p.easy_at_cap = 0;
-        }
-        if (easy) p.size = std::min(p.largest_size, 2.0 * p.size);
-        cutbacks = 0;
-        if (p.fraction >= 1.0 - 1e-12) end_step(ramps);
+        control.converged(report.corrections);
+        if (control.step_done()) end_step(ramps);
         // Last: the callback may save a checkpoint, which must hold the progress as it now stands.
         if (on_increment) on_increment(report);
-      } else {
-        for (BeamElementState& e : model_state_.elements) e.revert();
-        for (Interaction* interaction : model_state_.interactions()) interaction->revert();
-        state_ = committed_state_;
-        applied_motion_ = committed_motion_;
-        assembler_->assemble(model_, model_state_, state_, internal_forces_, nullptr);
-        // An extrapolated predictor can lead Newton astray where the plain one converges at the same size
-        // (past a yield knee the last increment's motion is a poor guide): retry once without it before cutting.
-        if (report.extrapolated) {
-          plain_retry = true;
-          ++statistics_.plain_retries;
-          continue;
-        }
-        // Also stop when the size falls below what max_cutbacks halvings of the nominal size allow: converging
-        // and failing in turn could otherwise shrink the increments without bound (the load stalls at a limit).
-        const double smallest = nominal * std::ldexp(1.0, -model_.options.max_cutbacks);
-        if (++cutbacks > model_.options.max_cutbacks || 0.5 * p.size < smallest * (1.0 - 1e-9)) {
-          // Before stopping, the automatic stabilization: on for the rest of the step, from a quarter of the nominal
-          // increment, with the full sequence of cut-backs again.
-          if (model_.options.automatic_stabilization && !p.stabilized) {
-            set_automatic_stabilization(true);
-            ++statistics_.stabilized_steps;
-            cutbacks = 0;
-            p.size = p.largest_size = kStabilizedRestartSize * nominal;
-            p.easy_at_cap = 0;
-            continue;
-          }
+        continue;
+      }
+      for (BeamElementState& e : model_state_.elements) e.revert();
+      for (Interaction* interaction : model_state_.interactions()) interaction->revert();
+      state_ = committed_state_;
+      applied_motion_ = committed_motion_;
+      assembler_->assemble(model_, model_state_, state_, internal_forces_, nullptr);
+      switch (control.failed(report.extrapolated)) {
+        case Recovery::kPlainRetry: ++statistics_.plain_retries; break;
+        case Recovery::kHalve: break;
+        case Recovery::kStabilize:
+          set_automatic_stabilization(true);
+          ++statistics_.stabilized_steps;
+          break;
+        case Recovery::kStop: {
           AnalysisStatus status;
           status.converged = false;
-          status.message = stop_message(step.name, p.ramp, p.converged_increments + 1, p.fraction, target, nominal, report);
+          status.message = stop_message(step.name, p.ramp, c.converged_increments + 1, c.fraction, target, nominal, report);
           return status;
         }
-        p.largest_size = std::min(p.largest_size, 0.5 * p.size);
-        p.easy_at_cap = 0;
-        p.size *= 0.5;
       }
     }
     if (p.in_step) end_step(ramps);  // not reached: the last increment closes the step
   }
   return {};
+}
+
+double StaticAnalysis::carried_last_size(const std::map<ActionKey, std::pair<double, double>>& ramps) const {
+  // A step that goes on loading the same way as the previous one (every action changes by the same positive
+  // multiple c of its previous change) extrapolates from that step's last increment, which measures 1/c of it.
+  const Progress& p = progress_;
+  double c = 0, largest = 0;
+  for (const auto& [key, ramp] : ramps) {
+    const double before = p.previous_change.count(key) ? p.previous_change.at(key) : 0.0;
+    if (std::abs(before) > largest) largest = std::abs(before), c = (ramp.second - ramp.first) / before;
+  }
+  if (!(c > 0)) return 0.0;
+  for (const auto& [key, ramp] : ramps) {
+    const double before = p.previous_change.count(key) ? p.previous_change.at(key) : 0.0, now = ramp.second - ramp.first;
+    if (std::abs(now - c * before) > 1e-9 * (std::abs(now) + std::abs(before))) return 0.0;
+  }
+  return p.previous_last_size / c;
 }
 
 void StaticAnalysis::add_increment_work() {
@@ -269,7 +230,7 @@ void StaticAnalysis::end_step(const std::map<ActionKey, std::pair<double, double
     p.totals[key] = ramp.second;
     p.previous_change[key] = ramp.second - ramp.first;
   }
-  p.previous_last_size = p.last_size;
+  p.previous_last_size = p.control.sizes().last_size;
   p.in_step = false;
   ++p.ramp;
 }

@@ -32,6 +32,8 @@ constexpr double kMaxForcing = 0.1;
 
 StaticAnalysis::StaticAnalysis(Model& model) : model_(model), convergence_(model.options, 1.0, 0.0, 0.0) {
   model_.options.validate();
+  progress_.control = IncrementController(
+      {model_.options.max_cutbacks, model_.options.max_iterations, model_.options.automatic_stabilization});
   if (model_.options.threads > 0) omp_set_num_threads(model_.options.threads);
   if (model_.elements.empty()) model_.build_elements();
   model_state_ = ModelState::initial(model_);

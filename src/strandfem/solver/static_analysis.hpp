@@ -8,6 +8,7 @@
 
 #include "strandfem/solver/assembler.hpp"
 #include "strandfem/solver/convergence_test.hpp"
+#include "strandfem/solver/increment_controller.hpp"
 #include "strandfem/solver/krylov.hpp"
 #include "strandfem/solver/model.hpp"
 #include "strandfem/solver/stabilization.hpp"
@@ -112,20 +113,16 @@ class StaticAnalysis {
   // increment sizes and predictor it had.
   struct Progress {
     int ramp = 0;                 // the ramp (expanded load step) being solved
-    bool in_step = false;         // the ramp has begun (the fields below are its own)
-    double fraction = 0;          // converged load fraction within the ramp
-    double size = 0;              // next increment size (fraction units)
-    double largest_size = 0;      // cap on the size after a failure
-    double last_size = 0;         // last converged increment (0: none, no extrapolation)
-    int easy_at_cap = 0;          // easy increments at the cap since it was set
-    int converged_increments = 0;
-    bool extrapolation_failed = false;  // a plain retry converged where extrapolation failed: no more in this ramp
-    bool stabilized = false;      // the automatic stabilization is on for the rest of the ramp
+    bool in_step = false;         // the ramp has begun (control holds its sizes)
+    IncrementController control;  // the ramp's increment sizes, cut-backs and recovery
     std::map<ActionKey, double> totals;           // action values at the end of the previous ramp
     std::map<ActionKey, double> previous_change;  // each action's change over the previous ramp
     double previous_last_size = 0;                // that ramp's last converged increment (its fraction units)
   };
   void end_step(const std::map<ActionKey, std::pair<double, double>>& ramps);
+  // The last increment of the previous ramp in this ramp's fraction units where this ramp goes on loading the same
+  // way (0: it does not).
+  double carried_last_size(const std::map<ActionKey, std::pair<double, double>>& ramps) const;
   // What a stop says: where Newton failed, what the controller tried, and what in the case to check.
   std::string stop_message(const std::string& step_name, int ramp, int increment, double converged_fraction, double target,
                            double nominal, const IncrementReport& last) const;
@@ -185,7 +182,8 @@ class StaticAnalysis {
   double model_extent2_ = 0;  // squared diagonal of the reference bounding box
   double last_correction2_ = 0;
   void add_increment_work();
-  // Switches the automatic stabilization (SolverOptions::automatic_stabilization) on or off from the converged state.
+  // Switches the automatic stabilization (SolverOptions::automatic_stabilization) on or off from the converged state;
+  // the increment controller decides when.
   void set_automatic_stabilization(bool on);
   // The stabilization for the assembler: this increment's factor against the last converged state.
   ElementDamping damping() const { return {&stabilization_, &committed_state_, stabilization_factor_}; }  // the converged increment's external work and stabilization energy into energies_
