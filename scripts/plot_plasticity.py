@@ -9,8 +9,8 @@
 
 Usage:
   strandfem run cases/paper/seven_wire_plastic_fixed.yaml -o RUNS/seven_fixed   (same for _free, wire_120_plastic)
-  scripts/plot_plasticity.py RUNS -> docs/validation_plasticity.png, docs/validation_wire_120_von_mises.png,
-  and the comparison numbers printed for docs/validation.md. Missing runs are skipped.
+  scripts/plot_plasticity.py RUNS [OUT_DIR] -> docs/validation_plasticity.png, docs/validation_wire_120_von_mises.png
+  (or into OUT_DIR), and the comparison numbers printed for docs/validation.md. Missing runs are skipped.
 """
 import csv, json, os, sys
 import matplotlib
@@ -20,6 +20,7 @@ from matplotlib import cm, colors
 
 root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 runs = sys.argv[1] if len(sys.argv) > 1 else "/tmp/strandfem_plasticity"
+figures = sys.argv[2] if len(sys.argv) > 2 else os.path.join(root, "docs")
 
 
 def history(name):
@@ -92,7 +93,7 @@ a2.set_ylabel("axial load (kN)")
 a2.set_title("120-wire strand (Table 3), Fig. 5b")
 a2.legend(fontsize=8)
 fig.tight_layout()
-fig.savefig(os.path.join(root, "docs", "validation_plasticity.png"), dpi=120)
+fig.savefig(os.path.join(figures, "validation_plasticity.png"), dpi=120)
 
 # Fig. 5a: von Mises along the wires at the end of step 1 (strain 0.0056), z <= 60 mm.
 wires_path = os.path.join(runs, "wire_120", "wires.csv")
@@ -120,7 +121,7 @@ if os.path.exists(wires_path):
     ax.set_xlabel("x (mm)")
     ax.set_ylabel("y (mm)")
     ax.set_zlabel("z (mm)")
-    fig.savefig(os.path.join(root, "docs", "validation_wire_120_von_mises.png"), dpi=120)
+    fig.savefig(os.path.join(figures, "validation_wire_120_von_mises.png"), dpi=120)
     layers = {}
     for w in nodes:
         if 20 <= float(w["z_mm"]) <= 60:

@@ -2,8 +2,8 @@
 """Runs the 7-wire strand of the paper's Table 1 (fixed and free ends, mu = 0.115) and plots axial load
 against strain beside Costello's linear theory, and the core-wire contact force per length beside Table 2.
 
-Usage: scripts/plot_validation.py [build/apps/strandfem] -> docs/validation_seven_wire.png and the numbers
-printed for docs/validation.md.
+Usage: scripts/plot_validation.py [build/apps/strandfem [OUT_DIR]] -> docs/validation_seven_wire.png (or into
+OUT_DIR) and the numbers printed for docs/validation.md.
 """
 import csv, json, os, subprocess, sys
 import matplotlib
@@ -12,6 +12,7 @@ import matplotlib.pyplot as plt
 
 root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 exe = sys.argv[1] if len(sys.argv) > 1 else os.path.join(root, "build/apps/strandfem")
+figures = sys.argv[2] if len(sys.argv) > 2 else os.path.join(root, "docs")
 out = "/tmp/strandfem_validation_fixed"
 subprocess.run([exe, "run", os.path.join(root, "cases/paper/seven_wire_fixed.yaml"), "-q", "-o", out], check=True)
 rows = list(csv.DictReader(open(os.path.join(out, "history.csv"))))
@@ -55,7 +56,7 @@ a2.set_ylabel("core-wire contact force p (N/mm)")
 a2.set_title("Table 2")
 a2.legend()
 fig.tight_layout()
-fig.savefig(os.path.join(root, "docs/validation_seven_wire.png"), dpi=110)
+fig.savefig(os.path.join(figures, "validation_seven_wire.png"), dpi=110)
 slope = force[-1] / strain[-1]
 print(f"slope {slope:.6g} N, Costello fixed {k_fixed:.6g} N, ratio {slope / k_fixed:.5f}")
 for t in table:
