@@ -125,13 +125,10 @@ JOBS = {j.name: j for j in [
     run_job("plasticity/seven_fixed", "cases/paper/seven_wire_plastic_fixed.yaml"),
     run_job("plasticity/seven_free", "cases/paper/seven_wire_plastic_free.yaml", 74),  # validation/default-settings.md
     run_job("plasticity/wire_120", "cases/paper/wire_120_plastic.yaml", 743),  # validation.md
-    # Section 3.2, S32. Case 1 on the defaults (the title's 197 of 199 nodes); cases 2 and 3 "on the plain normal
-    # law" (validation/bending.md, loops 37.2 and 72.4 N m); case 4 with the numerical keys (validation.md).
+    # Section 3.2, S32. Cases 1 to 3 as shipped; case 4 with the numerical keys (validation.md).
     run_job("s32_case1", BENDING + "s32_case1.yaml", 405),  # validation/bending.md, alone
-    Job("s32_case2_plain_normal_law", [BENDING + "s32_case2.yaml"], sets=["contact.normal_smoothing=0"],
-        wall_s=352),  # validation.md, on the defaults
-    Job("s32_case3_plain_normal_law", [BENDING + "s32_case3.yaml"], sets=["contact.normal_smoothing=0"],
-        wall_s=338),  # validation.md, on the defaults
+    run_job("s32_case2", BENDING + "s32_case2.yaml", 352),  # validation.md
+    run_job("s32_case3", BENDING + "s32_case3.yaml", 338),  # validation.md
     Job("s32_case4_numerical_keys", [BENDING + "s32_case4.yaml"], sets=["contact.normal_smoothing=1.0e-3", SOLVER_KEYS],
         wall_s=568),  # validation/bending.md, two MUMPS processes
     # Section 4, Cardinal: fig9 as shipped, two cycles; the maps with the normal onset at 1e-4 mm and the solver's keys
@@ -307,10 +304,10 @@ FIGURES = {
     "validation_wire_120_von_mises.png": PLASTICITY,
     # Section 3.2, S32.
     "validation_s32_case1_deflection.png": BendingPlot("s32_case1", "bending_deflection.png"),
-    "validation_s32_case2_hysteresis.png": BendingPlot("s32_case2_plain_normal_law", "bending_hysteresis.png"),
-    "validation_s32_case2_deflection.png": BendingPlot("s32_case2_plain_normal_law", "bending_deflection.png"),
-    "validation_s32_case3_hysteresis.png": BendingPlot("s32_case3_plain_normal_law", "bending_hysteresis.png"),
-    "validation_s32_case3_deflection.png": BendingPlot("s32_case3_plain_normal_law", "bending_deflection.png"),
+    "validation_s32_case2_hysteresis.png": BendingPlot("s32_case2", "bending_hysteresis.png"),
+    "validation_s32_case2_deflection.png": BendingPlot("s32_case2", "bending_deflection.png"),
+    "validation_s32_case3_hysteresis.png": BendingPlot("s32_case3", "bending_hysteresis.png"),
+    "validation_s32_case3_deflection.png": BendingPlot("s32_case3", "bending_deflection.png"),
     "validation_s32_case4_five_cycles.png": BendingPlot("s32_case4_numerical_keys", "bending_hysteresis.png"),
     "validation_bending_from_load_point.png": LOAD_POINT_PLOT,
     # Section 4, Cardinal.
