@@ -53,9 +53,9 @@ def measured(out):
     return f"strain {float(last['axial_strain']):.5g}, force {float(last['axial_force_N']) / 1000:.5g} kN"
 
 
-def run(program, case, threads, processes):
+def run(program, case, threads, processes, keep=None, label=""):
     with tempfile.TemporaryDirectory() as folder:
-        out = os.path.join(folder, "results")
+        out = os.path.join(keep, label) if keep else os.path.join(folder, "results")
         command = [program, "run", case, "-o", out, "-q", "-t", str(threads)]
         if processes > 1:
             command = ["mpiexec", "--allow-run-as-root", "--bind-to", "none", "-np", str(processes)] + command
@@ -74,6 +74,8 @@ def main():
     parser.add_argument("--processes", nargs="+", type=int, default=[1, 2])
     parser.add_argument("--only", nargs="+", default=[], help="run only cases whose file name contains one of these")
     parser.add_argument("--out", help="append the table rows to this file")
+    parser.add_argument("--keep", help="write each run's results folder under this folder (CASE_BUILD_tT_pP) instead of "
+                                       "a temporary one, e.g. to draw figures from it")
     args = parser.parse_args()
     programs = [p.split("=", 1) for p in args.program] or [["build", os.path.join(ROOT, "build/apps/strandfem")]]
     cases = args.cases or [os.path.join(ROOT, c) for c in DEFAULT_CASES]
@@ -86,7 +88,8 @@ def main():
     for case, (name, program), threads, processes in itertools.product(cases, programs, args.threads, args.processes):
         if processes > 1 and threads > 1:
             continue  # two processes run one BLAS thread each on a 2-core machine
-        status, wall, result = run(program, case, threads, processes)
+        label = f"{os.path.splitext(os.path.basename(case))[0]}_{name}_t{threads}_p{processes}"
+        status, wall, result = run(program, case, threads, processes, args.keep, label)
         row = f"| {os.path.basename(case)} | {name} | {threads} | {processes} | {status} | {wall:.0f} | {result} |"
         print(row, flush=True)
         if args.out:
