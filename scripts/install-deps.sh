@@ -8,6 +8,7 @@ packages=(
   libopenblas0-pthread libopenblas-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3-matplotlib python3-numpy python3-yaml
+  python3-dev pybind11-dev python3-pandas python3-mpi4py python3-pytest
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -391,8 +391,8 @@ bool has_cyclic_strand_step(const CaseDefinition& c) {
   return false;
 }
 
-CaseDefinition load_case(const std::string& path) {
-  const YAML::Node root = load_yaml_document(path);
+namespace {
+CaseDefinition parse_case(const YAML::Node& root, const std::string& path) {
   if (!root.IsMap()) throw CaseError(path + ": expected a YAML mapping at the top level");
   CaseDefinition c;
   c.path = path;
@@ -421,6 +421,13 @@ CaseDefinition load_case(const std::string& path) {
   c.resolved["solver"] = resolved_solver_options(c.model.options);
   c.resolved["contact"] = resolved_contact_settings(c.model.contact_settings);
   return c;
+}
+}  // namespace
+
+CaseDefinition load_case(const std::string& path) { return parse_case(load_yaml_document(path), path); }
+
+CaseDefinition load_case_text(const std::string& text, const std::string& name) {
+  return parse_case(parse_yaml_document(text, name), name);
 }
 
 }  // namespace strandfem

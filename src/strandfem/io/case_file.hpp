@@ -48,6 +48,8 @@ struct CaseDefinition {
 
 // Reads and validates a case file; throws CaseError naming the key and the expected value.
 CaseDefinition load_case(const std::string& path);
+// The same from case-file text in memory (the Python API's Case.from_dict); `name` stands for the file in messages.
+CaseDefinition load_case_text(const std::string& text, const std::string& name);
 
 // A strand bent in cycles: a strand case with a cyclic step (its bending results and profiles are written).
 bool has_cyclic_strand_step(const CaseDefinition& c);

@@ -36,9 +36,16 @@ CaseRunResult run_case(CaseDefinition& c, const std::filesystem::path& directory
       if (c.output.checkpoint) write_checkpoint(directory, c, writer, analysis);
       if (options.on_increment) options.on_increment(r);
       if (options.stop_after > 0 && ++increments >= options.stop_after) throw StopRequested{};
+      if (options.stop_requested && options.stop_requested()) throw StopRequested{};
     };
+    std::function<void(const IncrementReport&)> on_progress = options.on_progress;
+    if (options.stop_requested)
+      on_progress = [&](const IncrementReport& r) {
+        if (options.on_progress) options.on_progress(r);
+        if (options.stop_requested()) throw StopRequested{};
+      };
     try {
-      result.status = analysis.run(on_increment, options.on_progress ? options.on_progress : nullptr);
+      result.status = analysis.run(on_increment, on_progress ? on_progress : nullptr);
     } catch (const StopRequested&) {
       result.stopped = true;
       result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -18,12 +18,14 @@ struct CaseRunOptions {
   // Stops after this many converged increments of this invocation (0: never), leaving the folder as a signal
   // would: results and checkpoint of the last converged increment, summary.json "running". For tests of resume.
   int stop_after = 0;
+  // Polled after each Newton iteration and increment: true stops the run as stop_after does (Ctrl-C in Python).
+  std::function<bool()> stop_requested;
 };
 
 struct CaseRunResult {
   AnalysisStatus status;
   double wall_seconds = 0;  // this invocation's
-  bool stopped = false;     // by stop_after
+  bool stopped = false;     // by stop_after or stop_requested
 };
 
 // Solves `c` into `directory` (taken over, or continued with resume). `model_info` heads summary.json. Errors:

@@ -197,7 +197,7 @@ nlohmann::json ResultWriter::run_summary(const StaticAnalysis& analysis, double 
 void ResultWriter::record_stop(const StaticAnalysis& analysis, double wall_seconds) {
   nlohmann::json summary = run_summary(analysis, wall_seconds);
   summary["status"] = "stopped";
-  summary["message"] = "stopped by --stop-after after its last converged increment; --resume continues";
+  summary["message"] = "stopped on request (--stop-after, or Ctrl-C in Python) after its last converged increment; resume continues";
   write_summary(summary);
 }
 

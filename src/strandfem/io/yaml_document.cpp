@@ -120,8 +120,11 @@ std::size_t first_invalid_utf8(const std::string& text, bool printable_only) {
   return std::string::npos;
 }
 
-YAML::Node load_yaml_document(const std::string& path) {
-  const std::string text = read_text(path);
+YAML::Node load_yaml_document(const std::string& path) { return parse_yaml_document(read_text(path), path); }
+
+YAML::Node parse_yaml_document(const std::string& text, const std::string& path) {
+  if (text.size() > kMaxCaseFileBytes)
+    throw CaseError(path + ": larger than " + std::to_string(kMaxCaseFileBytes >> 20) + " MiB: not a case file");
   if (const std::size_t bad = first_invalid_utf8(text, true); bad != std::string::npos)
     throw CaseError(position_of(path, text, bad) +
                     ": not a UTF-8 text file (byte " + std::to_string(static_cast<unsigned char>(text[bad])) +

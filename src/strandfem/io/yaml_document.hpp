@@ -23,5 +23,7 @@ std::size_t first_invalid_utf8(const std::string& text, bool printable_only);
 // path is not a regular file, is unreadable or too large, is not UTF-8, is not valid YAML, when a mapping repeats
 // a key (naming both lines) or has a key that is not a scalar, or when the tree is too deep or too large.
 YAML::Node load_yaml_document(const std::string& path);
+// The same checks on case-file text held in memory; `name` stands for the file in messages.
+YAML::Node parse_yaml_document(const std::string& text, const std::string& name);
 
 }  // namespace strandfem

@@ -44,7 +44,10 @@ void set_blas_threads(int threads) {
   if (const auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"))) set(threads);
 }
 
+bool within_this_process = false;  // factor_within_this_process()
+
 int world_size() {
+  if (within_this_process) return 1;
   int size = 1;
   MPI_Comm_size(MPI_COMM_WORLD, &size);
   return size;
@@ -194,12 +197,18 @@ std::string mumps_build() {
 #endif
 }
 
+void factor_within_this_process() {
+#ifdef STRANDFEM_MUMPS_MPI
+  within_this_process = true;
+#endif
+}
+
 int mumps_communicator() {
 #ifdef STRANDFEM_MUMPS_MPI
   bool started = false;
   start_mpi_if_needed(nullptr, nullptr, started);
   if (started) std::atexit(finalize_at_exit);
-  return static_cast<int>(MPI_Comm_c2f(MPI_COMM_WORLD));
+  return static_cast<int>(MPI_Comm_c2f(within_this_process ? MPI_COMM_SELF : MPI_COMM_WORLD));
 #else
   return kSequentialCommunicator;
 #endif

@@ -27,6 +27,9 @@ class MumpsProcesses {
 
 // Number of processes the factorizations run on (1 without the MPI build or without mpirun).
 int mumps_process_count();
+// Every factorization of this process stays in it (MPI_COMM_SELF), whatever else runs under MPI: for the Python
+// package, whose sweeps hand variants to MPI ranks (mpi4py) that each solve their own model. Process-wide, as MPI is.
+void factor_within_this_process();
 // Which MUMPS the library was built on: "MPI (<library version>)" or "sequential".
 std::string mumps_build();
 

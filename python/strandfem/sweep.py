@@ -1,0 +1,104 @@
+"""Sweeps: one case in variants, each solved by the library in a process of its own, on this machine's cores or on
+MPI ranks across machines (an mpi4py.futures.MPIPoolExecutor)."""
+import concurrent.futures
+import csv
+import json
+import multiprocessing
+import os
+
+from strandfem import _core
+from strandfem.case import _yaml_scalar
+
+
+def _solve(text, name, folder, threads):
+    from strandfem.case import Case  # in the worker process
+    Case.from_text(text, name).run(folder, threads=threads)
+    return folder
+
+
+def _summary(folder, error):
+    try:
+        with open(os.path.join(folder, "summary.json")) as f:
+            return json.load(f)
+    except (OSError, ValueError):
+        return {"status": "failed", "message": str(error)}
+
+
+def _row(values, folder, error, header):
+    fields = next(csv.reader([_core.sweep_result_fields(json.dumps(_summary(folder, error)))]))
+    row = dict(values)
+    row["folder"] = folder
+    for column, field in zip(header, fields):
+        row[column] = field if column == "status" else (float(field) if field else float("nan"))
+    return row
+
+
+def _run_here(job, threads):
+    _, variant, folder = job
+    try:
+        variant.run(folder, threads=threads)
+        return None
+    except Exception as e:  # noqa: BLE001 - a variant that fails does not stop the others
+        return e
+
+
+def sweep(case, variants, out_dir, key=None, processes=None, threads=1, executor=None, mpi=False):
+    """Runs the variants of `case` into out_dir/<variant> and returns one row per variant as a DataFrame (also
+    written to out_dir/sweep.csv): the variant's keys, its folder, and the columns of `strandfem sweep`'s
+    sweep.csv (status; axial strain, force, secant stiffness and its ratio to the theory; for bending the cycles and
+    the last cycle's peak load, peak deflection, loop area, secant EI and return loop area).
+
+    variants: values of `key` ("contact.friction"), or dicts {key: value, ...} without it.
+    processes: variants solved at once on this machine (default: its cores / threads), each with `threads`.
+    mpi: the script runs under `mpiexec -n N`; the N ranks (on one machine or several) share the variants in turn,
+    each solving its own with `threads`, and every rank returns the whole table (rank 0 writes sweep.csv).
+    executor: a concurrent.futures executor to use instead, e.g. mpi4py.futures.MPIPoolExecutor().
+    Every variant is read and checked before any runs; a variant that stops or fails has its status in its row.
+    """
+    import pandas
+
+    variants = [{key: v} for v in variants] if key is not None else [dict(v) for v in variants]
+    jobs = []
+    for values in variants:
+        variant = case.with_values(values)
+        name = ",".join(_core.variant_folder_name(k, _yaml_scalar(v)) for k, v in values.items())
+        jobs.append((values, variant, os.path.join(os.fspath(out_dir), name)))
+    os.makedirs(out_dir, exist_ok=True)
+    header = _core.sweep_result_header().split(",")
+    write = True
+    if mpi:
+        from mpi4py import MPI
+        comm = MPI.COMM_WORLD
+        rank, size = comm.Get_rank(), comm.Get_size()
+        mine = {i: _row(job[0], job[2], _run_here(job, threads), header)
+                for i, job in enumerate(jobs) if i % size == rank}
+        everything = {}
+        for part in comm.allgather(mine):
+            everything.update(part)
+        rows = [everything[i] for i in range(len(jobs))]
+        write = rank == 0
+    elif executor is None:
+        workers = processes or max(1, (os.cpu_count() or 1) // max(1, threads))
+        # Fresh interpreters: a forked child would inherit this process's OpenMP and MPI state.
+        with concurrent.futures.ProcessPoolExecutor(max_workers=max(1, min(workers, len(jobs))),
+                                                    mp_context=multiprocessing.get_context("spawn")) as pool:
+            rows = _collect(pool, jobs, threads, header)
+    else:
+        rows = _collect(executor, jobs, threads, header)
+    table = pandas.DataFrame(rows)
+    if write:
+        table.to_csv(os.path.join(out_dir, "sweep.csv"), index=False)
+    return table
+
+
+def _collect(executor, jobs, threads, header):
+    futures = [executor.submit(_solve, variant.to_yaml(), variant._name, folder, threads) for _, variant, folder in jobs]
+    rows = []
+    for (values, _, folder), future in zip(jobs, futures):
+        try:
+            future.result()
+            error = None
+        except Exception as e:  # noqa: BLE001 - the variant's own summary.json says what happened where it exists
+            error = e
+        rows.append(_row(values, folder, error, header))
+    return rows

@@ -1,0 +1,231 @@
+"""The Python package against the program's own outputs and the reader's messages (ctest PythonPackage)."""
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import strandfem
+from strandfem.case import _yaml_text
+
+SOURCE = os.environ["STRANDFEM_SOURCE_DIR"]
+MPIEXEC = os.environ.get("STRANDFEM_MPIEXEC", "")
+try:
+    import mpi4py  # noqa: F401
+    MPI_SWEEP = bool(MPIEXEC)
+except ImportError:
+    MPI_SWEEP = False
+PROGRAM = os.environ["STRANDFEM_BINARY"]
+
+
+def seven_wire(increments=4, strain=0.004, **contact):
+    """The paper's 7-wire strand (Table 1), 100 mm, pulled with fixed ends."""
+    return {
+        "title": "7-wire strand from Python",
+        "materials": {"steel": {"E": 188000, "nu": 0.3}},
+        "strand": {"length": 100, "layers": [{"wires": 1, "diameter": 3.94, "material": "steel"},
+                                             {"wires": 6, "diameter": 3.73, "material": "steel", "lay_angle": 11.8}]},
+        "contact": {"friction": 0.115, **contact},
+        "steps": [{"name": "pull", "increments": increments, "axial_strain": strain}],
+        "output": {"vtu": False},
+    }
+
+
+class PythonPackage(unittest.TestCase):
+    def test_version_is_the_programs(self):
+        out = subprocess.run([PROGRAM, "--version"], capture_output=True, text=True, check=True).stdout
+        self.assertIn(strandfem.__version__, out)
+
+    def test_case_file_info_matches_strandfem_info(self):
+        path = os.path.join(SOURCE, "cases/paper/seven_wire_fixed.yaml")
+        info = strandfem.Case.from_yaml(path).info()
+        program = json.loads(subprocess.run([PROGRAM, "info", path], capture_output=True, text=True, check=True).stdout)
+        for key in ("EI_max_Nm2", "EI_min_Nm2", "axial_stiffness_N", "nodes", "dofs"):
+            self.assertEqual(info[key], program[key], key)
+
+    def test_bad_key_names_key_and_place(self):
+        data = seven_wire()
+        data["contact"]["frction"] = 0.2
+        with self.assertRaises(strandfem.CaseError) as caught:
+            strandfem.Case.from_dict(data, name="my_strand")
+        message = str(caught.exception)
+        self.assertIn("frction", message)
+        line = int(message.split(":")[1])  # my_strand:LINE:COLUMN: ...
+        self.assertIn("frction", _yaml_text(data).splitlines()[line - 1])
+
+    def test_missing_file_is_a_case_error(self):
+        with self.assertRaises(strandfem.CaseError):
+            strandfem.Case.from_yaml(os.path.join(SOURCE, "no_such_case.yaml"))
+
+    def test_run_matches_the_program_and_reads_back(self):
+        case = strandfem.Case.from_dict(seven_wire())
+        with tempfile.TemporaryDirectory() as folder:
+            calls = []
+            results = case.run(os.path.join(folder, "py"), threads=1, progress=calls.append)
+            self.assertTrue(results.converged, results.message)
+            history = results.history
+            self.assertEqual(len(history), len(calls))
+            self.assertAlmostEqual(calls[-1]["step_fraction"], 1.0)
+            self.assertAlmostEqual(history["axial_strain"].iloc[-1], 0.004)
+            # The same case through the program gives the same numbers.
+            case_file = os.path.join(folder, "case.yaml")
+            with open(case_file, "w") as f:
+                f.write(case.to_yaml())
+            subprocess.run([PROGRAM, "run", case_file, "-o", os.path.join(folder, "cli"), "-q", "-t", "1"], check=True)
+            cli = strandfem.read_results(os.path.join(folder, "cli"))
+            for a, b in zip(history["axial_force_N"], cli.history["axial_force_N"]):
+                self.assertTrue(math.isclose(a, b, rel_tol=1e-9), (a, b))
+            self.assertTrue(math.isclose(results.summary["axial"]["axial_force_N"], history["axial_force_N"].iloc[-1],
+                                         rel_tol=1e-9))
+            self.assertIsNone(results.loops)  # an axial case writes no bending loops
+
+    def test_exception_in_progress_stops_cleanly_and_resume_finishes(self):
+        case = strandfem.Case.from_dict(seven_wire(increments=6))
+        with tempfile.TemporaryDirectory() as folder:
+            full = case.run(os.path.join(folder, "full"), threads=1)
+
+            def stop_at_two(report):
+                if report["increment"] == 2:
+                    raise KeyboardInterrupt
+
+            out = os.path.join(folder, "stopped")
+            with self.assertRaises(KeyboardInterrupt):
+                case.run(out, threads=1, progress=stop_at_two)
+            stopped = strandfem.read_results(out)
+            self.assertEqual(stopped.status, "stopped")
+            self.assertEqual(len(stopped.history), 2)
+            resumed = case.run(out, threads=1, resume=True)
+            self.assertTrue(resumed.converged)
+            self.assertEqual(len(resumed.history), len(full.history))
+            # A resumed run starts its next increment from the plain predictor, so it matches to the solver's
+            # tolerance, not bit for bit (as resume_test.cpp's inexact case).
+            largest = full.history["axial_force_N"].abs().max()
+            for a, b in zip(resumed.history["axial_force_N"], full.history["axial_force_N"]):
+                self.assertLess(abs(a - b), 1e-4 * largest)
+
+    def test_references_match_eq_3_1_and_invert(self):
+        V, T, EI, L = 500.0, 30000.0, 2.0e7, 300.0
+        k = math.sqrt(EI / T)
+        y = V / T * (L / 4 - k * math.tanh(L / (4 * k)))  # eq. 3.1, written out
+        self.assertTrue(math.isclose(strandfem.references.midspan_deflection(V, T, EI, L), y, rel_tol=1e-12))
+        self.assertTrue(math.isclose(strandfem.references.deflection_curve(V, T, EI, L, L / 2), y, rel_tol=1e-9))
+        self.assertTrue(math.isclose(strandfem.references.equivalent_bending_stiffness(y / V, T, L), EI, rel_tol=1e-6))
+        curve = strandfem.references.deflection_curve(V, T, EI, L, [0.0, L / 4, L / 2])
+        self.assertEqual(curve[0], 0.0)
+        self.assertLess(curve[1], curve[2])
+        refs = strandfem.Case.from_dict(seven_wire()).references()
+        self.assertGreater(refs["ei_max_Nm2"], refs["ei_min_Nm2"])
+        self.assertGreaterEqual(refs["axial_stiffness_fixed_N"], refs["axial_stiffness_free_N"])
+
+    def test_variant_sets_the_key_and_checks_it(self):
+        case = strandfem.Case.from_dict(seven_wire())
+        variant = case.with_values({"contact.friction": 0.3, "strand.layers.1.lay_angle": 12.5})
+        self.assertIn("0.3", variant.resolved()["case"])
+        self.assertEqual(variant.info()["layers"][1]["lay_angle_deg"], 12.5)
+        with self.assertRaises(strandfem.CaseError) as caught:
+            case.with_values({"contact.friction": -1})
+        self.assertIn("contact.friction", str(caught.exception))
+
+    def test_sweep_over_processes_matches_single_runs(self):
+        case = strandfem.Case.from_dict(seven_wire(increments=2))
+        with tempfile.TemporaryDirectory() as folder:
+            table = strandfem.sweep(case, [0.05, 0.3], os.path.join(folder, "sweep"), key="contact.friction", processes=2)
+            self.assertEqual(list(table["contact.friction"]), [0.05, 0.3])
+            self.assertEqual(list(table["status"]), ["converged", "converged"])
+            single = case.with_values({"contact.friction": 0.3}).run(os.path.join(folder, "single"), threads=1)
+            self.assertTrue(math.isclose(table["axial_force_N"].iloc[1], single.summary["axial"]["axial_force_N"], rel_tol=1e-7))
+            self.assertTrue(os.path.exists(os.path.join(folder, "sweep", "sweep.csv")))
+
+    def test_table_1_strand_built_in_python_has_the_papers_slope(self):
+        data = seven_wire(increments=4, strain=0.004)
+        data["strand"]["length"] = 200
+        data["mesh"] = {"elements_per_wire": 24}
+        with tempfile.TemporaryDirectory() as folder:
+            h = strandfem.Case.from_dict(data).run(os.path.join(folder, "t1"), threads=1).history
+            strain, force = h["axial_strain"].to_numpy(), h["axial_force_N"].to_numpy()
+            slope = float((strain * force).sum() / (strain * strain).sum())  # least squares through the origin
+            self.assertLess(abs(slope / 13.85e6 - 1), 0.01, slope)  # paper Table 1, fixed ends: 13.85 MN
+
+    @unittest.skipUnless(MPI_SWEEP, "needs mpi4py and mpiexec")
+    def test_sweep_on_two_mpi_ranks_equals_the_serial_sweep(self):
+        data = seven_wire(increments=2)
+        script = (
+            "import json, sys, strandfem\n"
+            f"CASE = {json.dumps(data)!r}\n"
+            "t = strandfem.sweep(strandfem.Case.from_dict(json.loads(CASE)), [0.05, 0.2, 0.3], sys.argv[1],\n"
+            "                    key='contact.friction', mpi=True)\n"
+            "print('ROWS', len(t))\n")
+        with tempfile.TemporaryDirectory() as folder:
+            path = os.path.join(folder, "mpi_sweep.py")
+            with open(path, "w") as f:
+                f.write(script)
+            run = subprocess.run([MPIEXEC, "--allow-run-as-root", "--oversubscribe", "-n", "2", sys.executable, path,
+                                  os.path.join(folder, "mpi")], capture_output=True, text=True, timeout=240,
+                                 env=_without_mpi_singleton())
+            self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
+            self.assertEqual(run.stdout.count("ROWS 3"), 2)  # every rank has the whole table
+            serial = strandfem.sweep(strandfem.Case.from_dict(data), [0.05, 0.2, 0.3], os.path.join(folder, "serial"),
+                                     key="contact.friction", processes=1)
+            import pandas
+            parallel = pandas.read_csv(os.path.join(folder, "mpi", "sweep.csv"))
+            self.assertEqual(list(parallel["status"]), ["converged"] * 3)
+            for column in ("axial_strain", "axial_force_N", "secant_stiffness_N"):
+                for a, b in zip(parallel[column], serial[column]):
+                    self.assertTrue(math.isclose(a, b, rel_tol=1e-7), (column, a, b))
+
+    @unittest.skipUnless(MPI_SWEEP, "needs mpi4py and mpiexec")
+    def test_sweep_through_an_mpi4py_pool(self):
+        script = (
+            "import sys, strandfem\n"
+            "from mpi4py.futures import MPIPoolExecutor\n"
+            f"CASE = {json.dumps(seven_wire(increments=2))!r}\n"
+            "if __name__ == '__main__':\n"
+            "    import json\n"
+            "    with MPIPoolExecutor() as pool:\n"
+            "        t = strandfem.sweep(strandfem.Case.from_dict(json.loads(CASE)), [0.05, 0.2, 0.3], sys.argv[1],\n"
+            "                            key='contact.friction', executor=pool)\n"
+            "    print('STATUS', ','.join(t['status']))\n")
+        with tempfile.TemporaryDirectory() as folder:
+            path = os.path.join(folder, "mpi_sweep.py")
+            with open(path, "w") as f:
+                f.write(script)
+            run = subprocess.run([MPIEXEC, "--allow-run-as-root", "--oversubscribe", "-n", "3", sys.executable, "-m",
+                                  "mpi4py.futures", path, os.path.join(folder, "out")],
+                                 capture_output=True, text=True, timeout=240, env=_without_mpi_singleton())
+            self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
+            self.assertIn("STATUS converged,converged,converged", run.stdout)
+            for value in ("0.05", "0.2", "0.3"):
+                summary = strandfem.read_results(os.path.join(folder, "out", f"contact.friction={value}")).summary
+                self.assertEqual(summary["status"], "converged")
+
+    @unittest.skipUnless(os.environ.get("STRANDFEM_BUILD_DIR"), "needs the build folder")
+    def test_installed_package_imports_and_runs_away_from_the_build(self):
+        with tempfile.TemporaryDirectory() as folder:
+            prefix = os.path.join(folder, "prefix")
+            subprocess.run([os.environ["STRANDFEM_CMAKE_COMMAND"], "--install", os.environ["STRANDFEM_BUILD_DIR"], "--prefix",
+                            prefix], check=True, capture_output=True)
+            site = os.path.join(prefix, "lib", f"python{sys.version_info[0]}.{sys.version_info[1]}", "dist-packages")
+            code = ("import strandfem, sys; assert strandfem.__file__.startswith(sys.argv[1]), strandfem.__file__; "
+                    "r = strandfem.Case.from_yaml(sys.argv[2]).run('out', threads=1); print(r.status)")
+            case = os.path.join(prefix, "share", "strandfem", "cases", "paper", "seven_wire_fixed.yaml")
+            env = dict(_without_mpi_singleton(), PYTHONPATH=site)
+            run = subprocess.run([sys.executable, "-c", code, prefix, case], cwd=folder, env=env, capture_output=True, text=True)
+            self.assertEqual(run.returncode, 0, run.stderr)
+            self.assertEqual(run.stdout.strip(), "converged")
+
+    def test_read_results_refuses_a_folder_without_summary(self):
+        with tempfile.TemporaryDirectory() as folder:
+            with self.assertRaises(FileNotFoundError):
+                strandfem.read_results(folder)
+
+
+def _without_mpi_singleton():
+    """This process's environment without what an earlier run's MPI (MUMPS) set for itself, which would make the
+    mpiexec it starts take it for its own launcher."""
+    return {k: v for k, v in os.environ.items() if not k.startswith(("OMPI_", "PMIX_", "OPAL_", "PRTE_"))}
+
+
+if __name__ == "__main__":
+    unittest.main()
