@@ -158,12 +158,7 @@ class PythonPackage(unittest.TestCase):
             "                    key='contact.friction', mpi=True)\n"
             "print('ROWS', len(t))\n")
         with tempfile.TemporaryDirectory() as folder:
-            path = os.path.join(folder, "mpi_sweep.py")
-            with open(path, "w") as f:
-                f.write(script)
-            run = subprocess.run([MPIEXEC, "--allow-run-as-root", "--oversubscribe", "-n", "2", sys.executable, path,
-                                  os.path.join(folder, "mpi")], capture_output=True, text=True, timeout=240,
-                                 env=_without_mpi_singleton())
+            run = _run_under_mpiexec(script, 2, [], os.path.join(folder, "mpi"))
             self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
             self.assertEqual(run.stdout.count("ROWS 3"), 2)  # every rank has the whole table
             serial = strandfem.sweep(strandfem.Case.from_dict(data), [0.05, 0.2, 0.3], os.path.join(folder, "serial"),
@@ -188,12 +183,7 @@ class PythonPackage(unittest.TestCase):
             "                            key='contact.friction', executor=pool)\n"
             "    print('STATUS', ','.join(t['status']))\n")
         with tempfile.TemporaryDirectory() as folder:
-            path = os.path.join(folder, "mpi_sweep.py")
-            with open(path, "w") as f:
-                f.write(script)
-            run = subprocess.run([MPIEXEC, "--allow-run-as-root", "--oversubscribe", "-n", "3", sys.executable, "-m",
-                                  "mpi4py.futures", path, os.path.join(folder, "out")],
-                                 capture_output=True, text=True, timeout=240, env=_without_mpi_singleton())
+            run = _run_under_mpiexec(script, 3, ["-m", "mpi4py.futures"], os.path.join(folder, "out"))
             self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
             self.assertIn("STATUS converged,converged,converged", run.stdout)
             for value in ("0.05", "0.2", "0.3"):
@@ -215,10 +205,39 @@ class PythonPackage(unittest.TestCase):
             self.assertEqual(run.returncode, 0, run.stderr)
             self.assertEqual(run.stdout.strip(), "converged")
 
+    def test_worked_example_of_docs_runs_and_lies_between_the_bounds(self):
+        example = os.path.join(SOURCE, "python", "examples", "friction_sweep.py")
+        with tempfile.TemporaryDirectory() as folder:
+            out = os.path.join(folder, "friction")
+            run = subprocess.run([sys.executable, example, out], capture_output=True, text=True, timeout=240,
+                                 env=_without_mpi_singleton())
+            self.assertEqual(run.returncode, 0, run.stderr)
+            import pandas
+            table = pandas.read_csv(os.path.join(out, "sweep.csv"))
+            self.assertEqual(list(table["status"]), ["converged"] * 3)
+            ei = list(table["secant_ei_Nm2"])
+            self.assertEqual(ei, sorted(ei))  # stiffer as friction grows (paper section 5.1)
+            loops = list(table["loop_area_Nmm"])
+            self.assertEqual(loops, sorted(loops, reverse=True))  # and less friction loss
+            summary = strandfem.read_results(table["folder"][0]).summary
+            for value in ei:
+                self.assertTrue(summary["EI_min_Nm2"] < value < summary["EI_max_Nm2"], value)
+            self.assertTrue(os.path.exists(os.path.join(out, "loops.png")))
+
     def test_read_results_refuses_a_folder_without_summary(self):
         with tempfile.TemporaryDirectory() as folder:
             with self.assertRaises(FileNotFoundError):
                 strandfem.read_results(folder)
+
+
+def _run_under_mpiexec(script, ranks, python_options, out):
+    """Writes `script` beside `out` and runs it with `out` as its argument on `ranks` MPI ranks."""
+    path = out + "_script.py"
+    with open(path, "w") as f:
+        f.write(script)
+    return subprocess.run([MPIEXEC, "--allow-run-as-root", "--oversubscribe", "-n", str(ranks), sys.executable,
+                           *python_options, path, out], capture_output=True, text=True, timeout=240,
+                          env=_without_mpi_singleton())
 
 
 def _without_mpi_singleton():
