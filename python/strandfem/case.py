@@ -48,6 +48,7 @@ class Case:
 
     @property
     def title(self):
+        """The case's title."""
         return self._handle.title
 
     @property

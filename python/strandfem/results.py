@@ -30,18 +30,22 @@ class Results:
 
     @property
     def status(self):
+        """converged, not_converged, stopped, output_error, failed (running while a run writes the folder)."""
         return self.summary.get("status")
 
     @property
     def converged(self):
+        """The run reached the end of its load protocol."""
         return self.status == "converged"
 
     @property
     def message(self):
+        """Why a run stopped or failed, and what to try."""
         return self.summary.get("message", "")
 
     @property
     def wall_seconds(self):
+        """The wall time of the run (of this invocation, for a run from Case.run)."""
         return self._outcome.get("wall_seconds", self.summary.get("wall_time_s"))
 
     def table(self, name):
@@ -58,6 +62,7 @@ class Results:
 
     @classmethod
     def tables(cls):
+        """The tables by name (also attributes: results.history) and their files."""
         return dict(cls._TABLES)
 
     def __getattr__(self, name):
