@@ -224,6 +224,24 @@ class PythonPackage(unittest.TestCase):
                 self.assertTrue(summary["EI_min_Nm2"] < value < summary["EI_max_Nm2"], value)
             self.assertTrue(os.path.exists(os.path.join(out, "loops.png")))
 
+    def test_ctrl_c_during_a_run_keeps_the_converged_increments(self):
+        case = strandfem.Case.from_dict(seven_wire(increments=30))
+        import signal
+        import threading
+
+        def interrupt_soon(report):
+            if report["increment"] == 1:  # SIGINT 50 ms later, while the library solves the next increments
+                threading.Timer(0.05, os.kill, (os.getpid(), signal.SIGINT)).start()
+
+        with tempfile.TemporaryDirectory() as folder:
+            out = os.path.join(folder, "interrupted")
+            with self.assertRaises(KeyboardInterrupt):
+                case.run(out, threads=1, progress=interrupt_soon)
+            stopped = strandfem.read_results(out)
+            self.assertEqual(stopped.status, "stopped")
+            self.assertLess(len(stopped.history), 30)
+            self.assertTrue(case.run(out, threads=1, resume=True).converged)
+
     def test_read_results_refuses_a_folder_without_summary(self):
         with tempfile.TemporaryDirectory() as folder:
             with self.assertRaises(FileNotFoundError):
