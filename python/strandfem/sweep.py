@@ -27,6 +27,7 @@ def _summary(folder, error):
 def _row(values, folder, error, header):
     fields = next(csv.reader([_core.sweep_result_fields(json.dumps(_summary(folder, error)))]))
     row = dict(values)
+    row["variant"] = row["results"] = os.path.basename(folder)  # as `strandfem sweep` names them (plot_sweep.py)
     row["folder"] = folder
     for column, field in zip(header, fields):
         row[column] = field if column == "status" else (float(field) if field else float("nan"))
@@ -42,9 +43,9 @@ def _run_here(job, threads):
         return e
 
 
-def sweep(case, variants, out_dir, key=None, processes=None, threads=1, executor=None, mpi=False):
+def sweep(case, variants, out_dir, key=None, processes=None, threads=1, executor=None, mpi=False, plots=False):
     """Runs the variants of `case` into out_dir/<variant> and returns one row per variant as a DataFrame (also
-    written to out_dir/sweep.csv): the variant's keys, its folder, and the columns of `strandfem sweep`'s
+    written to out_dir/sweep.csv): the variant's keys, its name and folder, and the columns of `strandfem sweep`'s
     sweep.csv (status; axial strain, force, secant stiffness and its ratio to the theory; for bending the cycles and
     the last cycle's peak load, peak deflection, loop area, secant EI and return loop area).
 
@@ -53,6 +54,7 @@ def sweep(case, variants, out_dir, key=None, processes=None, threads=1, executor
     mpi: the script runs under `mpiexec -n N`; the N ranks (on one machine or several) share the variants in turn,
     each solving its own with `threads`, and every rank returns the whole table (rank 0 writes sweep.csv).
     executor: a concurrent.futures executor to use instead, e.g. mpi4py.futures.MPIPoolExecutor().
+    plots: also draw out_dir/sweep.png (strandfem.plot.sweep), as `strandfem sweep` does.
     Every variant is read and checked before any runs; a variant that stops or fails has its status in its row.
     """
     import pandas
@@ -88,6 +90,9 @@ def sweep(case, variants, out_dir, key=None, processes=None, threads=1, executor
     table = pandas.DataFrame(rows)
     if write:
         table.to_csv(os.path.join(out_dir, "sweep.csv"), index=False)
+        if plots:
+            from strandfem import plot
+            plot.sweep(out_dir)
     return table
 
 

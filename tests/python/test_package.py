@@ -156,11 +156,14 @@ class PythonPackage(unittest.TestCase):
             f"CASE = {json.dumps(data)!r}\n"
             "t = strandfem.sweep(strandfem.Case.from_dict(json.loads(CASE)), [0.05, 0.2, 0.3], sys.argv[1],\n"
             "                    key='contact.friction', mpi=True)\n"
-            "print('ROWS', len(t))\n")
+            "from mpi4py import MPI\n"
+            "open(f'{sys.argv[1]}_rows_{MPI.COMM_WORLD.Get_rank()}', 'w').write(str(len(t)))\n")
         with tempfile.TemporaryDirectory() as folder:
             run = _run_under_mpiexec(script, 2, [], os.path.join(folder, "mpi"))
             self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
-            self.assertEqual(run.stdout.count("ROWS 3"), 2)  # every rank has the whole table
+            for rank in (0, 1):  # every rank has the whole table
+                with open(os.path.join(folder, f"mpi_rows_{rank}")) as f:
+                    self.assertEqual(f.read(), "3")
             serial = strandfem.sweep(strandfem.Case.from_dict(data), [0.05, 0.2, 0.3], os.path.join(folder, "serial"),
                                      key="contact.friction", processes=1)
             import pandas
@@ -223,6 +226,11 @@ class PythonPackage(unittest.TestCase):
             for value in ei:
                 self.assertTrue(summary["EI_min_Nm2"] < value < summary["EI_max_Nm2"], value)
             self.assertTrue(os.path.exists(os.path.join(out, "loops.png")))
+            # The program's figures from Python, for one variant and for the sweep.
+            drawn = [os.path.basename(p) for p in strandfem.plot.bending(strandfem.read_results(table["folder"][0]))]
+            self.assertIn("bending_hysteresis.png", drawn)
+            self.assertIn("bending_deflection.png", drawn)
+            self.assertTrue(os.path.exists(strandfem.plot.sweep(out)))
 
     def test_ctrl_c_during_a_run_keeps_the_converged_increments(self):
         case = strandfem.Case.from_dict(seven_wire(increments=30))
