@@ -131,11 +131,9 @@ JOBS = {j.name: j for j in [
     run_job("s32_case3", BENDING + "s32_case3.yaml", 338),  # validation.md
     Job("s32_case4_numerical_keys", [BENDING + "s32_case4.yaml"], sets=["contact.normal_smoothing=1.0e-3", SOLVER_KEYS],
         wall_s=568),  # validation/bending.md, two MUMPS processes
-    # Section 4, Cardinal: fig9 as shipped, two cycles; the maps with the normal onset at 1e-4 mm and the solver's keys
-    # (bending.md, performance.md).
+    # Section 4, Cardinal: fig9 and the maps as shipped.
     run_job("cardinal_fig9", BENDING + "cardinal_fig9.yaml", 2650),  # validation.md, one thread beside other runs
-    Job("cardinal_maps_numerical_keys", [BENDING + "cardinal_maps.yaml"],
-        sets=["contact.normal_smoothing=1.0e-4", SOLVER_KEYS], wall_s=246),  # performance.md
+    run_job("cardinal_maps", BENDING + "cardinal_maps.yaml", 759),  # performance.md, one thread beside another run
     # Section 5, first loops (one cycle): the sweeps of the cardinal_friction*.yaml headers.
     Job("fig15_mu_a", [BENDING + "cardinal_friction.yaml"], key="contact.friction", values=["0.5", "0.7", "0.9"],
         wall_s=294 + 748 + 414),  # validation/default-settings.md
@@ -316,8 +314,8 @@ FIGURES = {
     "validation_cardinal_fig9_status_maps.png": BendingPlot("cardinal_fig9", "bending_status_maps.png"),
     "validation_cardinal_fig9_contact_forces.png": BendingPlot("cardinal_fig9",
                                                                "bending_contact_forces.png"),
-    "validation_cardinal_maps_hysteresis.png": BendingPlot("cardinal_maps_numerical_keys", "bending_hysteresis.png"),
-    "validation_cardinal_maps_status_maps.png": BendingPlot("cardinal_maps_numerical_keys", "bending_status_maps.png"),
+    "validation_cardinal_maps_hysteresis.png": BendingPlot("cardinal_maps", "bending_hysteresis.png"),
+    "validation_cardinal_maps_status_maps.png": BendingPlot("cardinal_maps", "bending_status_maps.png"),
     # Section 5, first loops.
     "validation_cardinal_fig15.png": sweep_of("fig15_mu_a", ["μa 0.5", "μa 0.7", "μa 0.9"]),
     "validation_cardinal_fig17_radial.png": sweep_of(
