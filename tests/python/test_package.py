@@ -250,6 +250,25 @@ class PythonPackage(unittest.TestCase):
             self.assertLess(len(stopped.history), 30)
             self.assertTrue(case.run(out, threads=1, resume=True).converged)
 
+    def test_a_run_that_cannot_go_on_returns_what_it_tried(self):
+        wire = {  # a straight wire twisted far past what three Newton iterations and one cut-back can carry
+            "title": "over-twisted wire",
+            "materials": {"steel": {"E": 200000, "nu": 0.3}},
+            "beams": [{"name": "wire", "material": "steel", "section": {"diameter": 3.0},
+                       "shape": {"type": "straight", "start": [0, 0, 0], "end": [0, 0, 100]}, "elements": 6}],
+            "supports": [{"at": {"beam": "wire", "point": "start"}, "fix": "all"},
+                         {"at": {"beam": "wire", "point": "end"}, "fix": ["ux", "uy", "rx", "ry"]}],
+            "steps": [{"name": "twist", "increments": 2, "forces": [{"at": {"beam": "wire", "point": "end"},
+                                                                      "moment": [0, 0, 9.0e7]}]}],
+            "solver": {"max_iterations": 3, "max_cutbacks": 1, "automatic_stabilization": False},
+        }
+        with tempfile.TemporaryDirectory() as folder:
+            results = strandfem.Case.from_dict(wire).run(os.path.join(folder, "twist"), threads=1)
+            self.assertFalse(results.converged)
+            self.assertEqual(results.status, "not_converged")
+            self.assertIn("Newton did not converge", results.message)
+            self.assertIn("tried:", results.message)
+
     def test_read_results_refuses_a_folder_without_summary(self):
         with tempfile.TemporaryDirectory() as folder:
             with self.assertRaises(FileNotFoundError):
