@@ -34,6 +34,14 @@ def seven_wire(increments=4, strain=0.004, **contact):
 
 
 class PythonPackage(unittest.TestCase):
+    def _interrupted_run(self, case, out, progress):
+        """Runs `case` expecting KeyboardInterrupt; returns the folder's results, which must say `stopped`."""
+        with self.assertRaises(KeyboardInterrupt):
+            case.run(out, threads=1, progress=progress)
+        stopped = strandfem.read_results(out)
+        self.assertEqual(stopped.status, "stopped")
+        return stopped
+
     def test_version_is_the_programs(self):
         out = subprocess.run([PROGRAM, "--version"], capture_output=True, text=True, check=True).stdout
         self.assertIn(strandfem.__version__, out)
@@ -91,11 +99,7 @@ class PythonPackage(unittest.TestCase):
                     raise KeyboardInterrupt
 
             out = os.path.join(folder, "stopped")
-            with self.assertRaises(KeyboardInterrupt):
-                case.run(out, threads=1, progress=stop_at_two)
-            stopped = strandfem.read_results(out)
-            self.assertEqual(stopped.status, "stopped")
-            self.assertEqual(len(stopped.history), 2)
+            self.assertEqual(len(self._interrupted_run(case, out, stop_at_two).history), 2)
             resumed = case.run(out, threads=1, resume=True)
             self.assertTrue(resumed.converged)
             self.assertEqual(len(resumed.history), len(full.history))
@@ -243,11 +247,7 @@ class PythonPackage(unittest.TestCase):
 
         with tempfile.TemporaryDirectory() as folder:
             out = os.path.join(folder, "interrupted")
-            with self.assertRaises(KeyboardInterrupt):
-                case.run(out, threads=1, progress=interrupt_soon)
-            stopped = strandfem.read_results(out)
-            self.assertEqual(stopped.status, "stopped")
-            self.assertLess(len(stopped.history), 30)
+            self.assertLess(len(self._interrupted_run(case, out, interrupt_soon).history), 30)
             self.assertTrue(case.run(out, threads=1, resume=True).converged)
 
     def test_a_run_that_cannot_go_on_returns_what_it_tried(self):
