@@ -407,6 +407,56 @@ TEST(ContactSet, StabilizationResistsOnlyTheSlideWithinAnIncrement) {
   EXPECT_NEAR(across_is_slave * second.stabilization.z(), -k * 0.1, 1e-9 * k);
 }
 
+// Augmented stick: a round takes a sticking point's elastic slip into its offset, so that at the same state the
+// stick force doubles and, with the stick points back together, the force stays (Uzawa's update); a point within
+// the tolerance is left alone, and the offset never leaves the cone.
+TEST(ContactSet, AugmentationTakesTheStickElasticSlipIntoItsOffset) {
+  Mesh mesh = v_wire_mesh(0.0);
+  mesh.add_line("across", 2, 0, 0, 2, [](double t) { return std::make_pair(Vec3(-1.95, 20.0 * t - 10.0, 5.0), Mat3::Identity()); });
+  ContactSettings settings = enabled_contact();
+  settings.friction = 0.3;
+  settings.initial_overlap = InitialOverlap::kKeep;
+  settings.stick_augmentations = 3;
+  ContactSet contacts;
+  contacts.initialize(mesh, settings);
+  const std::size_t crossing = crossing_index(contacts);
+  std::vector<NodeState> state = reference_state(mesh);
+  contacts.commit(mesh, state);
+  const ContactPoint& p = contacts.points()[crossing];
+  const double s = p.allowed_slip;
+  ASSERT_GT(s, 0.0);
+  auto slide_to = [&](double z) {
+    std::vector<NodeState> moved = state;
+    for (std::size_t n = 0; n < moved.size(); ++n)
+      if (mesh.nodes[n].wire == 1) moved[n].position.z() += z;
+    contacts.evaluate(mesh, moved, false);
+    return contacts.responses()[crossing];
+  };
+  contacts.begin_increment(true);
+  const ContactResponse penalty = slide_to(0.2 * s);
+  ASSERT_EQ(penalty.status, ContactStatus::kStick);
+  const double force = penalty.friction.norm();
+  EXPECT_NEAR(force, 0.3 * penalty.normal_force * 0.2, 1e-6 * penalty.normal_force);
+  EXPECT_EQ(contacts.augment_stick(), 1);
+  EXPECT_NEAR((p.stick_offset + Vec3(0, 0, p.wire_a == 1 ? 0.2 * s : -0.2 * s)).norm(), 0.0, 1e-9 * s);
+  EXPECT_NEAR(slide_to(0.2 * s).friction.norm(), 2 * force, 1e-6 * force);
+  const ContactResponse back = slide_to(0.0);  // stick points together again: the force stays
+  EXPECT_NEAR(back.friction.norm(), force, 1e-6 * force);
+  EXPECT_EQ(contacts.augment_stick(), 0);  // no elastic slip left
+  // Held apart as before, the point's separation did not shrink: the round extrapolates (Aitken, at most tenfold),
+  // up to the cone, and a point driven on then slides on it.
+  slide_to(0.2 * s);
+  EXPECT_EQ(contacts.augment_stick(), 1);
+  EXPECT_NEAR(p.stick_offset.norm(), s, 1e-12 * s);
+  const ContactResponse driven = slide_to(0.4 * s);
+  EXPECT_EQ(driven.status, ContactStatus::kSlip);
+  EXPECT_NEAR(driven.friction.norm(), 0.3 * driven.normal_force, 1e-9 * driven.normal_force);
+  EXPECT_EQ(contacts.augmentation_rounds(), 2);
+  // A new increment starts from the committed offset (none: nothing was committed).
+  contacts.begin_increment(true);
+  EXPECT_TRUE(p.stick_offset.isZero());
+}
+
 // Step control: a correction that closes a point its starting iterate had open (or within the smoothing band)
 // deeper than kDeepClosing closing depths is cut to where that point just reaches one closing depth, the gap taken
 // as linear in the fraction; points already in the penalty regime, and shallow closings, leave it whole.

@@ -11,13 +11,17 @@ namespace {
 constexpr double kSlidingDirectionTolerance = 1.0 - 1e-10;  // cosine between held and trial slip directions
 constexpr double kReleaseTolerance = 1e-3;           // relative tension / cone excess tolerated at convergence
 constexpr int kMaxFrictionSwitches = 6;
+constexpr double kMaxAugmentationRatio = 0.9;  // an augmentation round extrapolates at most tenfold
 // Releases + re-closings per point and increment; then an active point stays active (a point that keeps
 // opening and closing carries next to no force, and holding it closed stops the chatter).
 constexpr int kMaxNormalSwitches = 4;              // held friction switches per point and increment
 }  // namespace
 
 void ContactSet::begin_increment(bool loading_continues) {
+  augmentation_rounds_ = 0;
   for (ContactPoint& p : points_) {
+    p.stick_offset = p.history.stick_offset;
+    p.last_augmented_slip.setZero();
     p.active = p.history.closed;
     p.normal_switches = 0;
     p.friction_switches = 0;
@@ -101,6 +105,30 @@ int ContactSet::release_tensile() {
     // switch's (counted in held_mismatches()).
     ++p.friction_switches;
   }
+  return changed;
+}
+
+int ContactSet::augment_stick() {
+  if (augmentation_rounds_ >= settings_.stick_augmentations) return 0;
+  int changed = 0;
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    ContactPoint& p = points_[i];
+    const ContactResponse& r = responses_[i];
+    if (!frictional(p) || r.status != ContactStatus::kStick || !(r.normal_force > 0) || !(p.allowed_slip > 0)) continue;
+    const Vec3 offset = p.stick_offset - r.normal.dot(p.stick_offset) * r.normal;
+    const Vec3 elastic_slip = r.tangential_gap + offset;  // the stick points' separation on the contact plane
+    if (elastic_slip.norm() <= settings_.stick_tolerance * p.allowed_slip) continue;
+    // Points the stick holds against a stiff surrounding lose a fixed share of their slip per round: Aitken's
+    // extrapolation of that geometric series; the offset stays within the cone (|offset| <= allowed slip).
+    const double last = p.last_augmented_slip.norm();
+    const double ratio = last > 0 && elastic_slip.dot(p.last_augmented_slip) > 0 ? std::min(elastic_slip.norm() / last, kMaxAugmentationRatio) : 0.0;
+    Vec3 next = offset - elastic_slip / (1.0 - ratio);
+    if (next.norm() > p.allowed_slip) next *= p.allowed_slip / next.norm();
+    p.stick_offset = next;
+    p.last_augmented_slip = elastic_slip;
+    ++changed;
+  }
+  if (changed > 0) ++augmentation_rounds_;
   return changed;
 }
 

@@ -48,6 +48,9 @@ struct ContactHistory {
   bool anchored = false;           // stick points set (also while open: where the wires face each other)
   bool slipping = false;           // slipping at the last converged state (friction along -slip_direction):
                                    // the next increment starts by holding that slip
+  // Augmented stick: the elastic slip that carries the stick force with the stick points in place; the trial
+  // force is -k_t (g_T - stick_offset), g_T the stick points' separation. Zero without augmentation.
+  Vec3 stick_offset = Vec3::Zero();
 };
 
 // Fixed data of a contact point plus its committed history. Line points keep xi (their Gauss point) and
@@ -89,6 +92,8 @@ struct ContactPoint {
   // plain law gives it (stick, or slip in a fixed direction) while Newton converges; then ContactSet
   // switches the points whose trial force disagrees and Newton goes on. Stops stick/slip cycling.
   FrictionMode friction_mode = FrictionMode::kFree;
+  Vec3 stick_offset = Vec3::Zero();  // working value of history.stick_offset: augmentation rounds change it
+  Vec3 last_augmented_slip = Vec3::Zero();  // the elastic slip the last augmentation round of this increment took
   int friction_switches = 0;       // switches in this increment; past kMaxFrictionSwitches the plain law
   V3<double> slip_direction{0.0, 0.0, 0.0};  // held slip: unit direction of the friction force on the slave
 };
@@ -111,6 +116,7 @@ struct ContactResponse {
   Vec3 position = Vec3::Zero();    // contact point on the master surface
   double q1 = 0, q2 = 0;           // friction on the slave along directions 1 and 2: N or N/mm
   Vec3 tangential_gap = Vec3::Zero();  // elastic + trial slip vector of the slave relative to the master, mm
+                                       // (less the stick offset of an augmented stick)
   double slip_ratio = 1;           // P / ||Q_trial||_mu (> 1: the trial lies inside the friction cone)
   Vec3 friction = Vec3::Zero();        // friction force on the slave: N or N/mm
   Vec3 trial_friction = Vec3::Zero();  // the elastic trial -k_t g_T
@@ -206,6 +212,10 @@ ContactForces<T> contact_forces(const ContactPoint& point, const ElementPose<T>&
     const V3<T> separation = sub(surface_point(a, anchor.xi, point.radius_a, anchor.direction_a),
                                  surface_point(b, anchor.eta, point.radius_b, anchor.direction_b));
     out.tangential_gap = sub(separation, scale(dot(n, separation), n));
+    if (!point.stick_offset.isZero()) {
+      const V3<T> offset{T(point.stick_offset.x()), T(point.stick_offset.y()), T(point.stick_offset.z())};
+      out.tangential_gap = sub(out.tangential_gap, sub(offset, scale(dot(n, offset), n)));
+    }
     const FrictionLaw law{point.mu1, point.mu2, point.stiffness.tangential, point.allowed_slip, point.friction_mode,
                           point.slip_direction};
     const V3<T> reference = point.direction_along_slave_wire && point.mu2 != point.mu1

@@ -119,11 +119,13 @@ void ContactSet::commit_point(const Mesh& mesh, const std::vector<NodeState>& st
   const bool open = r.status == ContactStatus::kOpen || r.normal_force < 0;
   if (open) {
     // An opened contact has no stick state; the slip it accumulated stays on record.
+    h.stick_offset.setZero();
     h.closed = false;
     h.slipping = false;
     h.slip_since_reversal = 0;
     h.slip_direction.setZero();
   } else if (h.closed && r.status != ContactStatus::kSlip) {
+    h.stick_offset = p.stick_offset;
     return;  // sticking: the anchors stay
   }
   if (r.element_b < 0) {
@@ -140,18 +142,34 @@ void ContactSet::commit_point(const Mesh& mesh, const std::vector<NodeState>& st
     h.stick_b = sb;
     h.stick_direction_a = direction_a;
     h.stick_direction_b = direction_b;
+    h.stick_offset.setZero();
     return;
   }
   h.closed = true;
-  if (r.status != ContactStatus::kSlip) return;  // closed within the increment and sticking there
-  // Slipping: pull the stick points toward the current contact points so that k_t |g_T| = |Q| on the cone.
+  if (r.status != ContactStatus::kSlip) {  // closed within the increment and sticking there
+    h.stick_offset = p.stick_offset;
+    return;
+  }
+  // Slipping: the stick points move so that k_t |g_T - offset| = |Q| on the cone.
   const double c = r.slip_ratio;
-  h.stick_a = sa + (h.stick_a - sa) * c;
-  h.stick_b = sb + (h.stick_b - sb) * c;
-  h.stick_direction_a = (direction_a + (h.stick_direction_a - direction_a) * c).normalized();
-  h.stick_direction_b = (direction_b + (h.stick_direction_b - direction_b) * c).normalized();
-  const double slip = r.tangential_gap.norm() * (1.0 - c);
+  if (p.stick_offset.isZero()) {  // pulled toward the current contact points
+    h.stick_a = sa + (h.stick_a - sa) * c;
+    h.stick_b = sb + (h.stick_b - sb) * c;
+    h.stick_direction_a = (direction_a + (h.stick_direction_a - direction_a) * c).normalized();
+    h.stick_direction_b = (direction_b + (h.stick_direction_b - direction_b) * c).normalized();
+  } else {  // augmented: onto the current contact points, the offset carrying the force on the cone
+    h.stick_a = sa;
+    h.stick_b = sb;
+    h.stick_direction_a = direction_a;
+    h.stick_direction_b = direction_b;
+    h.stick_offset = -c * r.tangential_gap;
+  }
   const Vec3 direction = r.tangential_gap.normalized();
+  // Under the penalty stick the slip is the trial's excess over the cone; under the augmented stick the stick
+  // points have not moved apart while sticking, and the slip is their whole separation along the slip.
+  const Vec3 offset = p.stick_offset - r.normal.dot(p.stick_offset) * r.normal;
+  const double slip = p.stick_offset.isZero() ? r.tangential_gap.norm() * (1.0 - c)
+                                              : std::max(0.0, (r.tangential_gap + offset).dot(direction));
   if (direction.dot(h.slip_direction) < 0) h.slip_since_reversal = 0;
   h.slip += slip;
   h.dissipated_energy += std::max(0.0, -r.friction.dot(direction)) * slip * p.weight;

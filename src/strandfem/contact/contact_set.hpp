@@ -52,6 +52,11 @@ class ContactSet final : public Interaction {
     return grew;
   }
   int changes_at_convergence() override { return release_tensile(); }
+  int augment_at_convergence() override { return augment_stick(); }
+  void keep_converged_round() override {
+    if (augmentation_rounds_ < settings_.stick_augmentations) converged_round_ = points_;
+  }
+  void return_to_converged_round() override { points_ = converged_round_; }
   // A point that carried less than the full penalty stiffness where a correction starts (open, or within the
   // normal smoothing band) may close in it, but a correction that presses it deeper than kDeepClosing closing
   // depths is cut to where the deepest such point just reaches one closing depth: its tangent knew nothing of that
@@ -65,6 +70,11 @@ class ContactSet final : public Interaction {
   void save_state(ArchiveWriter& out) const override;
   void restore_state(ArchiveReader& in, const Mesh& mesh, const std::vector<NodeState>& state) override;
   int release_tensile();
+  // Augmented stick (ContactSettings::stick_augmentations): every sticking point whose stick points have moved
+  // apart by more than the tolerance takes that elastic slip into its stick offset (the force it carries there
+  // doubles its penalty part, and Newton goes on). Returns how many points changed; 0 once the rounds are spent.
+  int augment_stick();
+  int augmentation_rounds() const { return augmentation_rounds_; }
 
   // Converged increment at `state`: writes histories (stick points, slip), keeps each crossing's element pair
   // (the centre of its next location), re-runs the search when nodes moved more than half the margin. Returns true
@@ -123,6 +133,8 @@ class ContactSet final : public Interaction {
   std::vector<NodeState> reference_;  // the mesh's stress-free state (overlap offsets are measured there)
   std::vector<Vec3> searched_positions_;
   int searches_ = 0;
+  int augmentation_rounds_ = 0;  // augment_stick rounds in this increment
+  std::vector<ContactPoint> converged_round_;  // the points before the last augmentation round
   double commit_stabilization_energy_ = 0;  // see commit_stabilization_energy()
 };
 

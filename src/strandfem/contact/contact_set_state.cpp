@@ -18,6 +18,8 @@ void save_point(ArchiveWriter& out, const ContactPoint& p) {
   out.vec3(h.stick_direction_a);
   out.vec3(h.stick_direction_b);
   out.vec3(h.slip_direction);
+  out.vec3(h.stick_offset);
+  out.vec3(p.stick_offset);
   out.value(p.friction_mode);
   out.value(p.friction_switches);
   out.value(p.slip_direction);
@@ -42,6 +44,8 @@ ContactPoint load_point(ArchiveReader& in) {
   h.stick_direction_a = in.vec3();
   h.stick_direction_b = in.vec3();
   h.slip_direction = in.vec3();
+  h.stick_offset = in.vec3();
+  p.stick_offset = in.vec3();
   in.value(p.friction_mode);
   in.value(p.friction_switches);
   in.value(p.slip_direction);

@@ -75,6 +75,12 @@ struct ContactSettings {
   // bending moves crossings by hundredths of a millimetre, and 0.05 mm of elastic slip (10 mm elements) let them
   // all stick elastically (docs/validation/regularization.md, "The stick's elastic slip in bending").
   double elastic_slip = 0.0005;
+  // Augmented stick (Uzawa on the tangential penalty): once Newton has converged, each sticking point's force takes
+  // over its elastic slip and Newton goes on, until no sticking point has slipped elastically by more than
+  // stick_tolerance x its allowed slip or stick_augmentations rounds are spent. The stick then tends to Coulomb's
+  // (no relative motion) while the penalty, and with it Newton's conditioning, stays; 0: the penalty stick alone.
+  int stick_augmentations = 0;
+  double stick_tolerance = 0.05;
   // Friction: default coefficient, then material pairs, then axial zones (highest priority).
   double friction = 0.0;
   std::vector<MaterialPairFriction> pair_friction;

@@ -29,7 +29,7 @@ const std::vector<CaseKeyGroup>& case_key_table() {
       {"steps[i].motions[i]", {"at", "ux", "uy", "uz", "rx", "ry", "rz"}},
       {"output", {"every", "vtu", "monitor", "contacts", "contacts_every", "wires", "checkpoint", "clamp_edge_offset", "steady_tolerance"}},
       {"contact", {"enabled", "friction", "friction_pairs", "friction_zones", "orthotropy_ratio", "friction_direction", "axis", "normal_factor",
-                   "normal_multiplier", "tangential_penalty", "elastic_slip", "tangential_factor", "tangential_multiplier", "search_margin",
+                   "normal_multiplier", "tangential_penalty", "elastic_slip", "stick_augmentations", "stick_tolerance", "tangential_factor", "tangential_multiplier", "search_margin",
                    "line_contact_angle", "line_points", "initial_overlap", "touch_tolerance", "normal_smoothing", "stabilization",
                    "pattern_margin"}},
       {"contact.friction_pairs[i]", {"materials", "mu", "orthotropy_ratio", "contacts"}},

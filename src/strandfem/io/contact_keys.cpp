@@ -84,6 +84,12 @@ ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Nod
   positive("tangential_multiplier", c.tangential_multiplier, "-");
   positive("search_margin", c.search_margin, "mm");
   positive("elastic_slip", c.elastic_slip, "fraction of the contact element length");
+  if (node["stick_augmentations"])
+    c.stick_augmentations = reader.integer(node["stick_augmentations"], "contact.stick_augmentations", 0, 100);
+  if (node["stick_tolerance"]) {
+    c.stick_tolerance = reader.positive(node["stick_tolerance"], "contact.stick_tolerance", "fraction of the allowed elastic slip");
+    if (c.stick_tolerance >= 1) reader.fail(node["stick_tolerance"], "contact.stick_tolerance", "expected a fraction of the allowed elastic slip below 1");
+  }
   if (node["normal_smoothing"])
     c.normal_smoothing = reader.non_negative(node["normal_smoothing"], "contact.normal_smoothing", "mm");
   if (const YAML::Node n = node["stabilization"]) {
@@ -130,7 +136,8 @@ nlohmann::json resolved_contact_settings(const ContactSettings& k) {
                              {"normal_factor", k.normal_factor}, {"tangential_factor", k.tangential_factor},
                              {"normal_multiplier", k.normal_multiplier}, {"tangential_multiplier", k.tangential_multiplier},
                              {"tangential_penalty", k.tangential_penalty == TangentialPenalty::kPaper ? "paper" : "elastic_slip"},
-                             {"elastic_slip", k.elastic_slip}, {"search_margin", k.search_margin}, {"pattern_margin", k.pattern_margin}, {"line_contact_angle", k.line_contact_angle},
+                             {"elastic_slip", k.elastic_slip}, {"stick_augmentations", k.stick_augmentations}, {"stick_tolerance", k.stick_tolerance},
+                             {"search_margin", k.search_margin}, {"pattern_margin", k.pattern_margin}, {"line_contact_angle", k.line_contact_angle},
                              {"line_points", k.line_points},
                              {"initial_overlap", k.initial_overlap == InitialOverlap::kOffset ? "offset" : "keep"}, {"touch_tolerance", k.touch_tolerance},
                              {"normal_smoothing", k.normal_smoothing ? nlohmann::json(*k.normal_smoothing) : nlohmann::json(nullptr)},

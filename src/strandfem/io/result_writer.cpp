@@ -148,6 +148,8 @@ nlohmann::json solver_statistics(const StaticAnalysis& analysis) {
           {"pattern_rebuilds", a.pattern_rebuilds},
           {"rejected_extrapolations", a.rejected_extrapolations},
           {"plain_retries", a.plain_retries},
+          {"stick_augmentations", a.stick_augmentations},
+          {"abandoned_augmentations", a.abandoned_augmentations},
           {"searched_recoveries", a.searched_recoveries},
           {"stabilized_steps", a.stabilized_steps},
           {"limited_corrections", a.limited_corrections},

@@ -11,7 +11,7 @@ namespace {
 //    the statistics of the earlier ones have another layout.
 // 5: adds the load norms the step's convergence test measures against, and the statistics the searched recoveries.
 // 6: adds whether the automatic stabilization is on, and the statistics the steps it switched on in.
-constexpr int kStateVersion = 6;
+constexpr int kStateVersion = 7;
 
 void save_nodes(ArchiveWriter& out, const std::vector<NodeState>& nodes) {
   out.value(static_cast<std::uint64_t>(nodes.size()));

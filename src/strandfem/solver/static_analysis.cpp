@@ -239,6 +239,13 @@ int StaticAnalysis::changes_at_convergence() {
   return changes;
 }
 
+int StaticAnalysis::augment_at_convergence() {
+  int changes = 0;
+  for (Interaction* interaction : model_state_.interactions()) changes += interaction->augment_at_convergence();
+  if (changes > 0) ++statistics_.stick_augmentations;
+  return changes;
+}
+
 ResidualCheck StaticAnalysis::choose_predictor(double extrapolation, ResidualCheck plain, std::vector<double>& rhs, IncrementReport& report) {
   if (!(extrapolation > 0)) return plain;
   // The extrapolated predictor must beat the plain one: after slip events or contact changes the last
@@ -285,36 +292,53 @@ bool StaticAnalysis::solve_increment(const IncrementAttempt& attempt, const std:
   int since_change = 0, rounds = 0;
   double previous_reference = 0;  // load norm of the iterate before the current one
   double round_start = current.relative;  // residual at the last contact change (or the predictor)
+  bool augmented = false;  // an augmentation round since the last correction: Newton must correct before accepting
+  // The converged iterate before the last augmentation round: where a failure after a round returns to.
+  std::vector<NodeState> converged_round;
+  const auto fail = [&] {
+    if (converged_round.empty()) return false;
+    state_ = converged_round;
+    for (Interaction* interaction : model_state_.interactions()) interaction->return_to_converged_round();
+    evaluate_residual(rhs);
+    ++statistics_.abandoned_augmentations;
+    return true;
+  };
   for (int iteration = 0;; ++iteration, ++since_change) {
     report.residual_history.push_back(current.relative);
     report.residual_norm = current.relative;
     report.iterations = iteration;
     if (on_progress) on_progress(report);
-    if (!std::isfinite(current.relative)) return false;
+    if (!std::isfinite(current.relative)) return fail();
     // Diverging (kDivergenceCheckAfter).
-    if (since_change >= kDivergenceCheckAfter && current.relative > round_start) return false;
+    if (since_change >= kDivergenceCheckAfter && current.relative > round_start) return fail();
     const Convergence decision =
         convergence_.decide(current, {iteration == 0, report.corrections, last_correction2_, increment_displacement2, previous_reference});
-    if (decision.converged) {
+    if (decision.converged && (!augmented || dofs_.equation_count == 0)) {
       report.force_only = decision.force_only;
       // Converged for the interactions' current states (contact: active set, held friction); they may
-      // change them (contacts left in tension open) and Newton goes on.
-      if (changes_at_convergence() == 0) return true;
-      if (++rounds > kMaxContactRounds) return false;
+      // change them (contacts left in tension open), or augment (the stick), and Newton goes on.
+      if (changes_at_convergence() == 0) {
+        converged_round = state_;
+        for (Interaction* interaction : model_state_.interactions()) interaction->keep_converged_round();
+        augmented = augment_at_convergence() > 0;
+        if (!augmented) return true;
+      }
+      if (++rounds > kMaxContactRounds) return fail();
       since_change = 0;
       current = evaluate_residual(rhs);
       accept_iterate();
       round_start = current.relative;
       continue;
     }
-    if (since_change == opt.max_iterations) return false;
+    if (since_change == opt.max_iterations) return fail();
     ++statistics_.newton_iterations;
     ++report.corrections;
     {
       const ScopedTimer timer(statistics_.assembly_seconds);
       assembler_->assemble(model_, model_state_, state_, internal_forces_, &values_, damping());
     }
-    if (!solve_linear(rhs, linear_tolerance(current.relative))) return false;
+    if (!solve_linear(rhs, linear_tolerance(current.relative))) return fail();
+    augmented = false;
     const std::vector<NodeState> start = state_;
     const std::vector<double> correction = rhs;
     // Line search on every correction but an attempt's first, which carries the load step (its residual is no
@@ -347,7 +371,7 @@ bool StaticAnalysis::solve_increment(const IncrementAttempt& attempt, const std:
     if (first_correction) round_start = std::max(round_start, current.relative);
     accept_iterate();
     // A correction longer than the model itself is divergence, not progress: cut back at once.
-    if (last_correction2_ > model_extent2_) return false;
+    if (last_correction2_ > model_extent2_) return fail();
     increment_displacement2 = std::max(motion2(state_, committed_state_), attempt.motion_floor2);
     report.correction_ratio = increment_displacement2 > 0 ? std::sqrt(last_correction2_ / increment_displacement2) : 0.0;
   }

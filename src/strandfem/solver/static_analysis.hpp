@@ -44,6 +44,8 @@ struct AnalysisStatistics {
   int pattern_rebuilds = 0;    // tangent patterns rebuilt (interaction pairs changed); analyzed at their first factorization
   int rejected_extrapolations = 0;  // extrapolated predictors worse than the plain one (not used)
   int force_only_acceptances = 0;  // increments accepted on the force test alone (see IncrementReport::force_only)
+  int stick_augmentations = 0;  // augmentation rounds of the stick (contact.stick_augmentations)
+  int abandoned_augmentations = 0;  // rounds after which Newton failed: the increment kept the round before
   int plain_retries = 0;       // failed extrapolated increments repeated at the same size without extrapolation
   int searched_recoveries = 0; // increments converged after cut-backs with line search the case does not ask for
   int stabilized_steps = 0;    // ramps in which the automatic stabilization switched on (SolverOptions)
@@ -149,6 +151,7 @@ class StaticAnalysis {
   void accept_iterate();
   // Changes the interactions make to their states at a converged iterate (contacts in tension released...).
   int changes_at_convergence();
+  int augment_at_convergence();
   // The extrapolated predictor (factor > 0) where it beats the plain one, whose residual is `plain`.
   ResidualCheck choose_predictor(double extrapolation, ResidualCheck plain, std::vector<double>& rhs, IncrementReport& report);
   void update_slaves();
