@@ -162,6 +162,13 @@ Mesh v_wire_mesh(double slope) {
   return mesh;
 }
 
+// A straight wire along z and one across it (along y at z = 5) pressed 0.05 mm into it.
+Mesh pressed_crossing_mesh() {
+  Mesh mesh = v_wire_mesh(0.0);
+  mesh.add_line("across", 2, 0, 0, 2, [](double t) { return std::make_pair(Vec3(-1.95, 20.0 * t - 10.0, 5.0), Mat3::Identity()); });
+  return mesh;
+}
+
 // Index of the (single) crossing among a contact set's points.
 std::size_t crossing_index(const ContactSet& contacts) {
   const auto& points = contacts.points();
@@ -330,8 +337,7 @@ TEST(ContactSet, FrictionHoldsAPointFromTheIncrementItClosesIn) {
 // after V out) they start free, so that the plain law sticks them as they unload (docs/theory.md, "Newton with
 // contact"). The crossing of the test above, slid 0.2 mm and committed, is moved back by a tenth of its elastic slip.
 TEST(ContactSet, SlippingPointsStartFreeWhereTheLoadingTurns) {
-  Mesh mesh = v_wire_mesh(0.0);
-  mesh.add_line("across", 2, 0, 0, 2, [](double t) { return std::make_pair(Vec3(-1.95, 20.0 * t - 10.0, 5.0), Mat3::Identity()); });
+  const Mesh mesh = pressed_crossing_mesh();
   ContactSettings settings = enabled_contact();
   settings.friction = 0.3;
   settings.initial_overlap = InitialOverlap::kKeep;
@@ -370,8 +376,7 @@ TEST(ContactSet, SlippingPointsStartFreeWhereTheLoadingTurns) {
 // 0.2 mm it pushes back k_s 0.2 against the slide; the commit restarts the spring there (the same state then
 // carries no tangential force) and reports the energy it held, k_s 0.2^2 / 2; a further 0.1 mm gives k_s 0.1.
 TEST(ContactSet, StabilizationResistsOnlyTheSlideWithinAnIncrement) {
-  Mesh mesh = v_wire_mesh(0.0);
-  mesh.add_line("across", 2, 0, 0, 2, [](double t) { return std::make_pair(Vec3(-1.95, 20.0 * t - 10.0, 5.0), Mat3::Identity()); });
+  const Mesh mesh = pressed_crossing_mesh();
   ContactSettings settings = enabled_contact();
   settings.stabilization = 1e-4;
   settings.initial_overlap = InitialOverlap::kKeep;
@@ -411,8 +416,7 @@ TEST(ContactSet, StabilizationResistsOnlyTheSlideWithinAnIncrement) {
 // stick force doubles and, with the stick points back together, the force stays (Uzawa's update); a point within
 // the tolerance is left alone, and the offset never leaves the cone.
 TEST(ContactSet, AugmentationTakesTheStickElasticSlipIntoItsOffset) {
-  Mesh mesh = v_wire_mesh(0.0);
-  mesh.add_line("across", 2, 0, 0, 2, [](double t) { return std::make_pair(Vec3(-1.95, 20.0 * t - 10.0, 5.0), Mat3::Identity()); });
+  const Mesh mesh = pressed_crossing_mesh();
   ContactSettings settings = enabled_contact();
   settings.friction = 0.3;
   settings.initial_overlap = InitialOverlap::kKeep;

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "program_runner.hpp"
+#include "test_strands.hpp"
 
 namespace strandfem::verification {
 namespace {
@@ -84,36 +85,14 @@ TEST(AugmentedStick, PressedWiresSlideAtOnceAsUnderCoulombsRigidStick) {
     if (u >= 0.1 * a - 1e-12) EXPECT_NEAR(f, Q, 1e-3 * Q) << "u = " << u;
 }
 
-// The inner 19 wires of S32, 200 mm, 10 kN, then 1 kN at midspan and back.
-std::string nineteen_wires(const std::string& contact) {
-  return R"(
-materials:
-  core: {E: 200000, nu: 0.3, density: 7.85e-9}
-  steel: {E: 180000, nu: 0.3, density: 7.85e-9}
-strand:
-  length: 200
-  ends: fixed
-  layers:
-    - {wires: 1,  diameter: 3.72, material: core}
-    - {wires: 6,  diameter: 3.54, material: steel, lay_angle: 14.22}
-    - {wires: 12, diameter: 3.54, material: steel, lay_angle: 13.69}
-mesh: {element_length: 10}
-contact: {friction: 0.2)" + contact + R"(}
-steps:
-  - {name: tension, increments: 3, axial_force: 10000}
-  - {name: bend, increments: 5, cycles: 1, transverse_force: {value: 1000, z: 100, direction: [0, 1, 0]}}
-output: {vtu: false}
-)";
-}
-
 nlohmann::json first_loop(const std::filesystem::path& out) {
   return nlohmann::json::parse(std::ifstream(out / "summary.json"))["bending"]["loops"].at(0);
 }
 
 TEST(AugmentedStick, NineteenWireLoopNoLongerDependsOnTheElasticSlip) {
-  const auto penalty = first_loop(run_inline_case(nineteen_wires(", elastic_slip: 0.001"), "aug_19_penalty"));
-  const auto coarse = first_loop(run_inline_case(nineteen_wires(", elastic_slip: 0.001, stick_augmentations: 5"), "aug_19_coarse"));
-  const auto fine = first_loop(run_inline_case(nineteen_wires(", elastic_slip: 0.0005, stick_augmentations: 5"), "aug_19_fine"));
+  const auto penalty = first_loop(run_inline_case(nineteen_wire_bent_once(", elastic_slip: 0.001"), "aug_19_penalty"));
+  const auto coarse = first_loop(run_inline_case(nineteen_wire_bent_once(", elastic_slip: 0.001, stick_augmentations: 5"), "aug_19_coarse"));
+  const auto fine = first_loop(run_inline_case(nineteen_wire_bent_once(", elastic_slip: 0.0005, stick_augmentations: 5"), "aug_19_fine"));
   const double area = fine["area_Nmm"].get<double>();
   // Halving the elastic slip moves the augmented loop by about 1 %, the peak by less; the penalty's loop is a
   // third smaller (docs/validation/regularization.md).

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "program_runner.hpp"
+#include "test_strands.hpp"
 
 namespace strandfem::verification {
 namespace {
@@ -95,24 +96,7 @@ steps:
 // nominal increments.
 TEST(LoadReversal, NineteenWireStrandBentOnceUnderTensionOnTheDefaults) {
   const std::string tag = "bend_19_defaults";
-  const auto rows = run_inline_case(R"(
-materials:
-  core: {E: 200000, nu: 0.3, density: 7.85e-9}
-  steel: {E: 180000, nu: 0.3, density: 7.85e-9}
-strand:
-  length: 200
-  ends: fixed
-  layers:
-    - {wires: 1,  diameter: 3.72, material: core}
-    - {wires: 6,  diameter: 3.54, material: steel, lay_angle: 14.22}
-    - {wires: 12, diameter: 3.54, material: steel, lay_angle: 13.69}
-mesh: {element_length: 10}
-contact: {friction: 0.2}
-steps:
-  - {name: tension, increments: 3, axial_force: 10000}
-  - {name: bend, increments: 5, cycles: 1, transverse_force: {value: 1000, z: 100, direction: [0, 1, 0]}}
-output: {vtu: false}
-)", tag);
+  const auto rows = run_inline_case(nineteen_wire_bent_once(), tag);
   ASSERT_FALSE(rows.empty());
   EXPECT_NEAR(rows.back().at("load_factor"), 3.0, 1e-9);
   EXPECT_LE(rows.size(), 19u);  // 3 + 2 x 5 nominal increments, times 1.5
