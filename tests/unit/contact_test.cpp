@@ -321,6 +321,24 @@ TEST(ContactTangent, ElasticSlipLaw) {
   EXPECT_LT(tangent_error(p, f, axis, ContactStatus::kSlip), 1e-6);
 }
 
+// Augmented stick: the offset shifts the trial force by k_t o (projected on the current contact plane), in stick
+// and in slip, and the tangent stays exact.
+TEST(ContactTangent, AugmentedStickOffset) {
+  PairFixture f(0.5, 1.8);
+  ContactPoint p = make_point(ContactKind::kPoint);
+  p.allowed_slip = 0.05;
+  set_stick(p, f, 0.005, 0.002);
+  const ContactResponse plain = response_at(p, f, false, Vec3::UnitX());
+  p.stick_offset = -plain.tangential_gap;  // one Uzawa round: the same separation now carries twice the force
+  const ContactResponse augmented = response_at(p, f, false, Vec3::UnitX());
+  EXPECT_NEAR((augmented.friction - 2.0 * plain.friction).norm(), 0.0, 1e-9 * plain.friction.norm());
+  EXPECT_LT(tangent_error(p, f, Vec3::UnitX(), ContactStatus::kStick), 1e-6);
+  p.stick_offset = -2.0 * p.allowed_slip * plain.tangential_gap.normalized();  // past the cone: slip on the ellipse
+  const ContactResponse slip = response_at(p, f, false, Vec3::UnitX());
+  EXPECT_NEAR(slip.friction.norm(), p.mu1 * slip.normal_force, 1e-9 * slip.normal_force);
+  EXPECT_LT(tangent_error(p, f, Vec3::UnitX(), ContactStatus::kSlip), 1e-6);
+}
+
 // contact.friction_direction: slave_wire. Direction 1 of an orthotropic point is the slave wire's tangent projected
 // on the contact plane, whatever the strand axis: at a crossing at 90 degrees the strand axis along the master
 // would swap the two directions. The direction moves with the slave wire, and the tangent carries its derivative.
