@@ -2,6 +2,8 @@
 // increment (docs/theory.md, "Newton with contact").
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "strandfem/contact/contact_set.hpp"
 
@@ -110,14 +112,20 @@ int ContactSet::release_tensile() {
 
 int ContactSet::augment_stick() {
   if (augmentation_rounds_ >= settings_.stick_augmentations) return 0;
-  int changed = 0;
+  std::vector<std::pair<std::size_t, Vec3>> updates;  // point, its elastic slip on the contact plane
   for (std::size_t i = 0; i < points_.size(); ++i) {
-    ContactPoint& p = points_[i];
+    const ContactPoint& p = points_[i];
     const ContactResponse& r = responses_[i];
     if (!frictional(p) || r.status != ContactStatus::kStick || !(r.normal_force > 0) || !(p.allowed_slip > 0)) continue;
-    const Vec3 offset = p.stick_offset - r.normal.dot(p.stick_offset) * r.normal;
-    const Vec3 elastic_slip = r.tangential_gap + offset;  // the stick points' separation on the contact plane
-    if (elastic_slip.norm() <= settings_.stick_tolerance * p.allowed_slip) continue;
+    const Vec3 elastic_slip = r.tangential_gap + (p.stick_offset - r.normal.dot(p.stick_offset) * r.normal);
+    if (elastic_slip.norm() > settings_.stick_tolerance * p.allowed_slip) updates.emplace_back(i, elastic_slip);
+  }
+  if (updates.empty()) return 0;
+  converged_round_ = points_;  // what return_to_converged_round() goes back to
+  for (const auto& [i, elastic_slip] : updates) {
+    ContactPoint& p = points_[i];
+    const Vec3& n = responses_[i].normal;
+    const Vec3 offset = p.stick_offset - n.dot(p.stick_offset) * n;
     // Points the stick holds against a stiff surrounding lose a fixed share of their slip per round: Aitken's
     // extrapolation of that geometric series; the offset stays within the cone (|offset| <= allowed slip).
     const double last = p.last_augmented_slip.norm();
@@ -126,10 +134,9 @@ int ContactSet::augment_stick() {
     if (next.norm() > p.allowed_slip) next *= p.allowed_slip / next.norm();
     p.stick_offset = next;
     p.last_augmented_slip = elastic_slip;
-    ++changed;
   }
-  if (changed > 0) ++augmentation_rounds_;
-  return changed;
+  ++augmentation_rounds_;
+  return static_cast<int>(updates.size());
 }
 
 }  // namespace strandfem

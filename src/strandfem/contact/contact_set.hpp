@@ -53,9 +53,6 @@ class ContactSet final : public Interaction {
   }
   int changes_at_convergence() override { return release_tensile(); }
   int augment_at_convergence() override { return augment_stick(); }
-  void keep_converged_round() override {
-    if (augmentation_rounds_ < settings_.stick_augmentations) converged_round_ = points_;
-  }
   void return_to_converged_round() override { points_ = converged_round_; }
   // A point that carried less than the full penalty stiffness where a correction starts (open, or within the
   // normal smoothing band) may close in it, but a correction that presses it deeper than kDeepClosing closing
@@ -134,7 +131,7 @@ class ContactSet final : public Interaction {
   std::vector<Vec3> searched_positions_;
   int searches_ = 0;
   int augmentation_rounds_ = 0;  // augment_stick rounds in this increment
-  std::vector<ContactPoint> converged_round_;  // the points before the last augmentation round
+  std::vector<ContactPoint> converged_round_;  // the points before the last augmentation round (augment_stick)
   double commit_stabilization_energy_ = 0;  // see commit_stabilization_energy()
 };
 

@@ -51,9 +51,8 @@ class Interaction {
   // Once no state changes: an augmentation round (contact: the stick takes over its elastic slip); returns how many
   // values changed (0: accept). Newton then corrects at least once before it may accept again.
   virtual int augment_at_convergence() { return 0; }
-  // Augmentation is tried, not required: before a round the solver keeps the converged working state, and returns
+  // Augmentation is tried, not required: a round keeps the converged working state it changed, and the solver returns
   // to it (and accepts) when Newton fails after the round.
-  virtual void keep_converged_round() {}
   virtual void return_to_converged_round() {}
   // Converged increment at `state`: writes the history; true when element_pairs() changed.
   virtual bool commit(const Mesh& mesh, const std::vector<NodeState>& state) = 0;

@@ -318,10 +318,9 @@ bool StaticAnalysis::solve_increment(const IncrementAttempt& attempt, const std:
       // Converged for the interactions' current states (contact: active set, held friction); they may
       // change them (contacts left in tension open), or augment (the stick), and Newton goes on.
       if (changes_at_convergence() == 0) {
-        converged_round = state_;
-        for (Interaction* interaction : model_state_.interactions()) interaction->keep_converged_round();
-        augmented = augment_at_convergence() > 0;
-        if (!augmented) return true;
+        if (augment_at_convergence() == 0) return true;
+        converged_round = state_;  // a round changes the interactions' values, not the nodes
+        augmented = true;
       }
       if (++rounds > kMaxContactRounds) return fail();
       since_change = 0;
