@@ -68,6 +68,26 @@ std::string increment_size_note(const strandfem::IncrementReport& r) {
   return note + searched;
 }
 
+// The verbose line of one Newton iteration: its residual and what preceded it (a correction, cut or whole, or a
+// round of contact changes or stick offsets), or why the attempt gave up.
+std::string iteration_line(const strandfem::IncrementReport& r) {
+  std::ostringstream line;
+  line << "  step " << r.step + 1 << " increment " << r.increment;
+  if (r.failure != strandfem::AttemptFailure::kNone) {
+    line << ": attempt at fraction " << r.step_fraction << " gave up after " << r.corrections << " corrections: "
+         << strandfem::describe(r.failure)
+         << (r.kept_converged_round ? "; the increment keeps its iterate before the last stick augmentation round" : "");
+    return line.str();
+  }
+  line << " iteration " << r.iterations << ": relative residual " << r.residual_norm;
+  if (r.state_changes > 0) return line.str() + " after a contact round (" + std::to_string(r.state_changes) + " state changes)";
+  if (r.augmented_points > 0)
+    return line.str() + " after a stick augmentation round (" + std::to_string(r.augmented_points) + " points)";
+  line << ", correction / increment motion " << r.correction_ratio;
+  if (r.step_length < 1) line << ", step length " << r.step_length << (r.step_limited ? " (contact step control)" : " (line search)");
+  return line.str();
+}
+
 // How far a run is through its load protocol, in nominal increments, and an estimate of the time left from the
 // pace since the first increment this invocation converged.
 class RunProgress {
@@ -148,11 +168,7 @@ int run_case_file(const std::string& case_path, const std::string& output_dir, i
                 << r.residual_norm << progress.note(r) << "\n";
   };
   if (verbose)
-    options.on_progress = [&](const strandfem::IncrementReport& r) {
-      std::cerr << "  step " << r.step + 1 << " increment " << r.increment << " iteration " << r.iterations
-                << ": relative residual " << r.residual_norm << ", correction / increment motion " << r.correction_ratio
-                << "\n";
-    };
+    options.on_progress = [&](const strandfem::IncrementReport& r) { std::cerr << iteration_line(r) << "\n"; };
   const strandfem::CaseRunResult result = strandfem::run_case(c, output_dir, info, options);
   if (result.stopped) {
     if (!quiet) std::cerr << "stopped after " << stop_after << " increments as asked; --resume continues from " << output_dir << "\n";

@@ -121,8 +121,8 @@ TEST(StrandProgram, NonConvergenceGivesExitCode3AndKeepsConvergedIncrements) {
   EXPECT_EQ(r.exit_code, 3) << r.stderr_text;
   EXPECT_NE(r.stderr_text.find("did not converge"), std::string::npos);
   // The stop names where Newton failed, what was tried, and what in the case to check.
-  for (const char* part : {"increment 1:", "relative residual", "tried:", "line search", "halving the increment 1 times",
-                           "check:", "raise its `increments`"})
+  for (const char* part : {"increment 1:", "relative residual", "the last attempt gave up: a correction longer than the model",
+                           "tried:", "line search", "halving the increment 1 times", "check:", "raise its `increments`"})
     EXPECT_NE(r.stderr_text.find(part), std::string::npos) << part << "\n" << r.stderr_text;
   EXPECT_EQ(read_csv(std::filesystem::path(out) / "history.csv").size(), 2u);  // the pull step converged
   const nlohmann::json summary = nlohmann::json::parse(std::ifstream(std::filesystem::path(out) / "summary.json"));
@@ -138,6 +138,17 @@ TEST(StrandProgram, ProgressLinesReportCutBacks) {
   EXPECT_NE(r.stderr_text.find("increment 1 (fraction 0.166667, 1/2 of the nominal increment after 1 cut-back, with line search)"),
             std::string::npos) << r.stderr_text;
   EXPECT_NE(r.stderr_text.find("(fraction 0.333333, 1/2 of the nominal increment)"), std::string::npos) << r.stderr_text;
+}
+
+// With -v each Newton iteration's line says what preceded it (a correction cut by the step control or by line search,
+// a round of contact changes), and a failed attempt says why it gave up (the same case's first increment).
+TEST(StrandProgram, VerboseLinesSayWhatEachIterationDidAndWhyAnAttemptGaveUp) {
+  const std::string out = ::testing::TempDir() + "/verbose_out";
+  const ProgramRun r = run_program("run " + case_path("cases/verification/resume_axial_cycles.yaml") + " -v -o " + out, "verbose");
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  for (const char* part : {"step 1 increment 1: attempt at fraction 0.333333 gave up after", "(contact step control)",
+                           "(line search)", "after a contact round ("})
+    EXPECT_NE(r.stderr_text.find(part), std::string::npos) << part << "\n" << r.stderr_text;
 }
 
 std::string read_text(const std::filesystem::path& file) {

@@ -33,9 +33,10 @@ std::string StaticAnalysis::stop_message(const std::string& step_name, int ramp,
   char text[1024];
   std::snprintf(text, sizeof text,
                 "step %d '%s', increment %d: Newton did not converge from load fraction %.6g to %.6g of the step "
-                "(last relative residual %.3g against the tolerance %.3g after %d corrections).\n",
+                "(last relative residual %.3g against the tolerance %.3g after %d corrections; the last attempt gave up: "
+                "%s).\n",
                 ramp + 1, step_name.c_str(), increment, converged_fraction, target, last.residual_norm,
-                std::min(opt.force_tolerance, opt.moment_tolerance), last.corrections);
+                std::min(opt.force_tolerance, opt.moment_tolerance), last.corrections, describe(last.failure).c_str());
   std::string message = text;
   const int cuts = std::max(opt.line_search_cuts, kRecoveryLineSearchCuts);
   const std::string search = opt.line_search_cuts >= kRecoveryLineSearchCuts ? "" : " after the first failure";

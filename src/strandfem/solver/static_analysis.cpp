@@ -30,6 +30,22 @@ constexpr double kMaxForcing = 0.1;
 
 }  // namespace
 
+std::string describe(AttemptFailure failure) {
+  switch (failure) {
+    case AttemptFailure::kNone: return "converged";
+    case AttemptFailure::kNotFinite: return "the residual is not a finite number";
+    case AttemptFailure::kDiverging:
+      return "diverging: " + std::to_string(kDivergenceCheckAfter) +
+             " corrections after the last contact change the residual is above where they started";
+    case AttemptFailure::kIterationLimit: return "solver.max_iterations corrections without convergence";
+    case AttemptFailure::kContactRounds:
+      return "the contact states kept changing at convergence (" + std::to_string(kMaxContactRounds) + " rounds)";
+    case AttemptFailure::kRunaway: return "a correction longer than the model itself";
+    case AttemptFailure::kLinearSolve: return "the linear solve failed";
+  }
+  return "";
+}
+
 StaticAnalysis::StaticAnalysis(Model& model) : model_(model), convergence_(model.options, 1.0, 0.0, 0.0) {
   model_.options.validate();
   progress_.control = IncrementController(
@@ -295,8 +311,12 @@ bool StaticAnalysis::solve_increment(const IncrementAttempt& attempt, const std:
   bool augmented = false;  // an augmentation round since the last correction: Newton must correct before accepting
   // The converged iterate before the last augmentation round: where a failure after a round returns to.
   std::vector<NodeState> converged_round;
-  const auto fail = [&] {
+  const auto fail = [&](AttemptFailure why) {
+    report.failure = why;
+    report.kept_converged_round = !converged_round.empty();
+    if (on_progress) on_progress(report);
     if (converged_round.empty()) return false;
+    report.failure = AttemptFailure::kNone;
     state_ = converged_round;
     for (Interaction* interaction : model_state_.interactions()) interaction->return_to_converged_round();
     evaluate_residual(rhs);
@@ -308,35 +328,40 @@ bool StaticAnalysis::solve_increment(const IncrementAttempt& attempt, const std:
     report.residual_norm = current.relative;
     report.iterations = iteration;
     if (on_progress) on_progress(report);
-    if (!std::isfinite(current.relative)) return fail();
+    if (!std::isfinite(current.relative)) return fail(AttemptFailure::kNotFinite);
     // Diverging (kDivergenceCheckAfter).
-    if (since_change >= kDivergenceCheckAfter && current.relative > round_start) return fail();
+    if (since_change >= kDivergenceCheckAfter && current.relative > round_start) return fail(AttemptFailure::kDiverging);
     const Convergence decision =
         convergence_.decide(current, {iteration == 0, report.corrections, last_correction2_, increment_displacement2, previous_reference});
     if (decision.converged && (!augmented || dofs_.equation_count == 0)) {
       report.force_only = decision.force_only;
       // Converged for the interactions' current states (contact: active set, held friction); they may
       // change them (contacts left in tension open), or augment (the stick), and Newton goes on.
-      if (changes_at_convergence() == 0) {
-        if (augment_at_convergence() == 0) return true;
+      report.step_length = 1;
+      report.step_limited = false;
+      report.state_changes = changes_at_convergence();
+      report.augmented_points = 0;
+      if (report.state_changes == 0) {
+        report.augmented_points = augment_at_convergence();
+        if (report.augmented_points == 0) return true;
         converged_round = state_;  // a round changes the interactions' values, not the nodes
         augmented = true;
       }
-      if (++rounds > kMaxContactRounds) return fail();
+      if (++rounds > kMaxContactRounds) return fail(AttemptFailure::kContactRounds);
       since_change = 0;
       current = evaluate_residual(rhs);
       accept_iterate();
       round_start = current.relative;
       continue;
     }
-    if (since_change == opt.max_iterations) return fail();
+    if (since_change == opt.max_iterations) return fail(AttemptFailure::kIterationLimit);
     ++statistics_.newton_iterations;
     ++report.corrections;
     {
       const ScopedTimer timer(statistics_.assembly_seconds);
       assembler_->assemble(model_, model_state_, state_, internal_forces_, &values_, damping());
     }
-    if (!solve_linear(rhs, linear_tolerance(current.relative))) return fail();
+    if (!solve_linear(rhs, linear_tolerance(current.relative))) return fail(AttemptFailure::kLinearSolve);
     augmented = false;
     const std::vector<NodeState> start = state_;
     const std::vector<double> correction = rhs;
@@ -361,6 +386,9 @@ bool StaticAnalysis::solve_increment(const IncrementAttempt& attempt, const std:
     };
     const StepLength step = choose_step_length(try_step, admissible, current.relative, line_search_cuts);
     if (step.limited) ++statistics_.limited_corrections;
+    report.step_length = step.accepted.alpha;
+    report.step_limited = step.limited;
+    report.state_changes = report.augmented_points = 0;
     // The displacement test measures what Newton asked for: a correction cut by the step control has not converged
     // because its cut part is short.
     last_correction2_ = step.limited ? std::max(step.accepted.correction2, step.full_correction2) : step.accepted.correction2;
@@ -370,7 +398,7 @@ bool StaticAnalysis::solve_increment(const IncrementAttempt& attempt, const std:
     if (first_correction) round_start = std::max(round_start, current.relative);
     accept_iterate();
     // A correction longer than the model itself is divergence, not progress: cut back at once.
-    if (last_correction2_ > model_extent2_) return fail();
+    if (last_correction2_ > model_extent2_) return fail(AttemptFailure::kRunaway);
     increment_displacement2 = std::max(motion2(state_, committed_state_), attempt.motion_floor2);
     report.correction_ratio = increment_displacement2 > 0 ? std::sqrt(last_correction2_ / increment_displacement2) : 0.0;
   }

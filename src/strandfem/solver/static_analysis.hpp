@@ -15,7 +15,12 @@
 
 namespace strandfem {
 
-// What a converged increment reports.
+// Why a Newton attempt gave up (docs/theory.md, "Increment control").
+enum class AttemptFailure { kNone, kNotFinite, kDiverging, kIterationLimit, kContactRounds, kRunaway, kLinearSolve };
+// The reason in words, for progress lines and stop messages.
+std::string describe(AttemptFailure failure);
+
+// What a converged increment reports; during its Newton solve, what each iteration did.
 struct IncrementReport {
   int step = 0;                // 0-based index of the ramp in the expanded load protocol
   std::string step_name;
@@ -33,6 +38,15 @@ struct IncrementReport {
   bool searched_recovery = false;  // converged after cut-backs with line search the case does not ask for
   bool stabilized = false;     // converged with the automatic stabilization on (SolverOptions::automatic_stabilization)
   double relative_size = 1;    // the increment's size over the step's nominal increment
+  // This iteration: the fraction of its correction taken (below 1: cut by an interaction's step control, or by line
+  // search), or the interaction state changes (contact releases, friction switches) and stick offsets of the round
+  // that preceded it instead of a correction.
+  double step_length = 1;
+  bool step_limited = false;   // the step control set step_length (line search may have halved it further)
+  int state_changes = 0;
+  int augmented_points = 0;
+  AttemptFailure failure = AttemptFailure::kNone;  // why the attempt gave up (reported once, then the controller acts)
+  bool kept_converged_round = false;  // it gave up after a stick augmentation round: the increment keeps the round before
 };
 
 // What the solver did: counts and wall time per phase (the linear solver's own figures are in
