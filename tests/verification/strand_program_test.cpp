@@ -273,9 +273,15 @@ TEST(NewtonConvergence, LineSearchCutsTheFirstCorrectionOfARetryAfterACutBack) {
   c.model.options.max_iterations = 2;
   StaticAnalysis analysis(c.model);
   std::vector<std::vector<double>> attempts;  // residual histories of the first increment's attempts
+  bool next_attempt = true;
   analysis.run({}, [&](const IncrementReport& r) {
     if (r.increment != 1) return;
-    if (attempts.empty() || r.residual_history.size() <= attempts.back().size()) attempts.emplace_back();
+    if (r.failure != AttemptFailure::kNone) {  // the attempt gave up: the next report starts the retry
+      next_attempt = true;
+      return;
+    }
+    if (next_attempt) attempts.emplace_back();
+    next_attempt = false;
     attempts.back() = r.residual_history;
   });
   ASSERT_GE(attempts.size(), 2u) << "the first attempt must fail and be retried for this test to mean anything";
