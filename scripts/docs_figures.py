@@ -122,10 +122,10 @@ def run_job(name, case, wall_s=None):
 JOBS = {j.name: j for j in [
     # Section 3.1, elastoplastic wires: plot_plasticity.py reads RUNS/seven_fixed, seven_free and wire_120.
     run_job("plasticity/seven_fixed", "cases/paper/seven_wire_plastic_fixed.yaml"),
-    run_job("plasticity/seven_free", "cases/paper/seven_wire_plastic_free.yaml", 74),  # validation/default-settings.md
-    run_job("plasticity/wire_120", "cases/paper/wire_120_plastic.yaml", 743),  # validation.md
+    run_job("plasticity/seven_free", "cases/paper/seven_wire_plastic_free.yaml", 55),  # validation/default-settings.md
+    run_job("plasticity/wire_120", "cases/paper/wire_120_plastic.yaml", 710),  # validation.md
     # Section 3.2, S32, as shipped.
-    run_job("s32_case1", BENDING + "s32_case1.yaml", 405),  # validation/bending.md, alone
+    run_job("s32_case1", BENDING + "s32_case1.yaml", 362),  # validation/bending.md, alone
     run_job("s32_case2", BENDING + "s32_case2.yaml", 352),  # validation.md
     run_job("s32_case3", BENDING + "s32_case3.yaml", 338),  # validation.md
     run_job("s32_case4", BENDING + "s32_case4.yaml", 1514),  # validation/bending.md, alone

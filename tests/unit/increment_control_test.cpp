@@ -40,17 +40,21 @@ TEST(IncrementController, NominalIncrementsLandOnTheGrid) {
 TEST(IncrementController, CutBackHalvesAndRegrowsAfterThreeEasyIncrementsAtTheCap) {
   IncrementController control;
   control.begin_step(4, 0.0);
+  EXPECT_FALSE(control.recovering());
   EXPECT_EQ(control.failed(false), Recovery::kHalve);
   EXPECT_EQ(control.cutbacks(), 1);
+  EXPECT_TRUE(control.recovering());
   EXPECT_NEAR(control.target(), 0.125, 1e-15);
   control.converged(kEasy);
   EXPECT_EQ(control.cutbacks(), 0);
+  EXPECT_TRUE(control.recovering());  // converged, but still below the nominal size
   // Back on the grid point 0.25 first; the cap (1/8) holds until three easy increments at it.
   EXPECT_NEAR(control.target(), 0.25, 1e-15);
   control.converged(kEasy);
   EXPECT_NEAR(control.target(), 0.375, 1e-15);
   control.converged(kEasy);  // the third easy increment at the cap: it doubles to the nominal size
   EXPECT_NEAR(control.sizes().largest_size, 0.25, 1e-15);
+  EXPECT_FALSE(control.recovering());
   EXPECT_NEAR(control.target(), 0.5, 1e-15);  // the next grid point limits the first increment at the regrown size
   control.converged(kEasy);
   EXPECT_NEAR(control.target(), 0.75, 1e-15);

@@ -130,14 +130,17 @@ TEST(StrandProgram, NonConvergenceGivesExitCode3AndKeepsConvergedIncrements) {
 }
 
 // A progress line says when an increment is smaller than the step's nominal one, after how many cut-backs, and
-// whether line search was on (the resume case cuts its first increment once).
+// whether line search was on: from the cut-back until the increments are back at their nominal size (the resume
+// case cuts its first increment once).
 TEST(StrandProgram, ProgressLinesReportCutBacks) {
   const std::string out = ::testing::TempDir() + "/progress_out";
   const ProgramRun r = run_program("run " + case_path("cases/verification/resume_axial_cycles.yaml") + " -o " + out, "progress");
   ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
   EXPECT_NE(r.stderr_text.find("increment 1 (fraction 0.166667, 1/2 of the nominal increment after 1 cut-back, with line search)"),
             std::string::npos) << r.stderr_text;
-  EXPECT_NE(r.stderr_text.find("(fraction 0.333333, 1/2 of the nominal increment)"), std::string::npos) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("increment 2 (fraction 0.333333, 1/2 of the nominal increment, with line search)"), std::string::npos)
+      << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("'pull' increment 5 (fraction 1): "), std::string::npos) << r.stderr_text;
 }
 
 // With -v each Newton iteration's line says what preceded it (a correction cut by the step control or by line search,

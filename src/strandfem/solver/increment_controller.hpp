@@ -47,6 +47,8 @@ class IncrementController {
   // that after cut-backs the increments land on the load levels the case asked for again.
   double target() const;
   int cutbacks() const { return cutbacks_; }
+  // A cut-back has capped the sizes below the nominal one and they have not grown back yet.
+  bool recovering() const { return s_.largest_size < nominal_ * (1.0 - 1e-9); }
   bool retrying_plain() const { return plain_retry_; }
   // The next attempt may start from the extrapolated predictor: there is a last increment to go by, and neither a
   // failure in this increment nor an earlier plain retry in this step says it misleads.

@@ -39,7 +39,7 @@ std::string StaticAnalysis::stop_message(const std::string& step_name, int ramp,
                 std::min(opt.force_tolerance, opt.moment_tolerance), last.corrections, describe(last.failure).c_str());
   std::string message = text;
   const int cuts = std::max(opt.line_search_cuts, kRecoveryLineSearchCuts);
-  const std::string search = opt.line_search_cuts >= kRecoveryLineSearchCuts ? "" : " after the first failure";
+  const std::string search = opt.line_search_cuts >= kRecoveryLineSearchCuts ? "" : " from the first cut-back on";
   std::snprintf(text, sizeof text,
                 "  tried: the plain predictor where the extrapolated one failed, the contact step control, line search "
                 "(%d halvings per correction)%s, and halving the increment %d times, down to %.3g of the nominal size "
@@ -119,9 +119,9 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
       // Ramped off: the factor falls linearly from its full value at the step's start to zero at its end.
       stabilization_factor_ = model_.options.stabilization * (model_.options.stabilization_ramp_off ? 1.0 - c.fraction : 1.0);
       if (c.stabilized) stabilization_factor_ = std::max(stabilization_factor_, kAutomaticViscousStabilization);
-      // The attempts after a failure, and every attempt the automatic stabilization carries, search their
-      // corrections, where the case runs without line search.
-      const bool searched = (control.cutbacks() > 0 || c.stabilized) && model_.options.line_search_cuts < kRecoveryLineSearchCuts;
+      // From a cut-back until the sizes are back at the nominal one, and while the automatic stabilization acts, the
+      // attempts search their corrections where the case runs without line search (docs/theory.md, "Increment control").
+      const bool searched = (control.recovering() || c.stabilized) && model_.options.line_search_cuts < kRecoveryLineSearchCuts;
       // Within a ramp, or across ramps that load the same way, there is a last increment to continue from; the first
       // increment of a ramp that turns the loading has none (last_size 0).
       const bool loading_continues = c.last_size > 0;

@@ -35,7 +35,7 @@ struct IncrementReport {
   bool extrapolated = false;   // started from the extrapolated predictor (see SolverOptions::extrapolate)
   bool force_only = false;     // accepted on the force test alone (a tenfold margin after several corrections)
   int cutbacks = 0;            // failed attempts halved before this increment converged
-  bool searched_recovery = false;  // converged after cut-backs with line search the case does not ask for
+  bool searched_recovery = false;  // converged below the nominal size after a cut-back, with line search the case does not ask for
   bool stabilized = false;     // converged with the automatic stabilization on (SolverOptions::automatic_stabilization)
   double relative_size = 1;    // the increment's size over the step's nominal increment
   // This iteration: the fraction of its correction taken (below 1: cut by an interaction's step control, or by line
@@ -61,7 +61,7 @@ struct AnalysisStatistics {
   int stick_augmentations = 0;  // augmentation rounds of the stick (contact.stick_augmentations)
   int abandoned_augmentations = 0;  // rounds after which Newton failed: the increment kept the round before
   int plain_retries = 0;       // failed extrapolated increments repeated at the same size without extrapolation
-  int searched_recoveries = 0; // increments converged after cut-backs with line search the case does not ask for
+  int searched_recoveries = 0; // increments converged below the nominal size after a cut-back, with line search the case does not ask for
   int stabilized_steps = 0;    // ramps in which the automatic stabilization switched on (SolverOptions)
   int limited_corrections = 0; // Newton corrections shortened by an interaction's step control (admissible_fraction)
   int double_precision_fallbacks = 0;  // single-precision factors that GMRES could not refine: solved in double
