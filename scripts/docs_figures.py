@@ -130,7 +130,7 @@ JOBS = {j.name: j for j in [
     run_job("s32_case3", BENDING + "s32_case3.yaml", 338),  # validation.md
     run_job("s32_case4", BENDING + "s32_case4.yaml", 1514),  # validation/bending.md, alone
     # Section 4, Cardinal: fig9 and the maps as shipped.
-    run_job("cardinal_fig9", BENDING + "cardinal_fig9.yaml", 2650),  # validation.md, one thread beside other runs
+    run_job("cardinal_fig9", BENDING + "cardinal_fig9.yaml", 2113),  # validation.md, beside another run
     run_job("cardinal_maps", BENDING + "cardinal_maps.yaml", 759),  # performance.md, one thread beside another run
     # Section 5, first loops (one cycle): the sweeps of the cardinal_friction*.yaml headers.
     Job("fig15_mu_a", [BENDING + "cardinal_friction.yaml"], key="contact.friction", values=["0.5", "0.7", "0.9"],
