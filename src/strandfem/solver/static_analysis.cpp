@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "strandfem/core/scoped_timer.hpp"
+#include "strandfem/solver/attempt_budget.hpp"
 #include "strandfem/solver/krylov.hpp"
 #include "strandfem/solver/step_length.hpp"
 #include "strandfem/solver/tangent_dump.hpp"
@@ -15,9 +16,6 @@ namespace strandfem {
 
 namespace {
 constexpr int kMaxContactRounds = 40;  // contact set changes per increment before a cut-back
-// An attempt whose residual, this many corrections after the last contact change, is above what it was at that
-// change is diverging: it is cut back at once rather than after max_iterations (see solve_increment).
-constexpr int kDivergenceCheckAfter = 8;
 // Scale of the round-off in assembled internal forces, as a fraction of the largest axial stiffness EA: sqrt of
 // the machine epsilon. Measured at zero load: 9e-16 EA (7-wire strand), 1.6e-13 EA (the same with contact, whose
 // penalties are far stiffer than EA / h); a real unbalance of 1.5e-8 EA is a strain of 1.5e-8 (docs/theory.md).
@@ -35,7 +33,7 @@ std::string describe(AttemptFailure failure) {
     case AttemptFailure::kNone: return "converged";
     case AttemptFailure::kNotFinite: return "the residual is not a finite number";
     case AttemptFailure::kDiverging:
-      return "diverging: " + std::to_string(kDivergenceCheckAfter) +
+      return "diverging: " + std::to_string(AttemptBudget::kDivergenceWindow) +
              " corrections after the last contact change the residual is above where they started";
     case AttemptFailure::kIterationLimit: return "solver.max_iterations corrections without convergence";
     case AttemptFailure::kContactRounds:
@@ -305,9 +303,9 @@ bool StaticAnalysis::solve_increment(const IncrementAttempt& attempt, const std:
   accept_iterate();
   // Newton iterations count from the last contact change (release or friction switch); the number of such
   // rounds per increment is capped separately.
-  int since_change = 0, rounds = 0;
+  AttemptBudget budget(opt.max_iterations, current.relative);
+  int rounds = 0;
   double previous_reference = 0;  // load norm of the iterate before the current one
-  double round_start = current.relative;  // residual at the last contact change (or the predictor)
   bool augmented = false;  // an augmentation round since the last correction: Newton must correct before accepting
   // The converged iterate before the last augmentation round: where a failure after a round returns to.
   std::vector<NodeState> converged_round;
@@ -323,14 +321,13 @@ bool StaticAnalysis::solve_increment(const IncrementAttempt& attempt, const std:
     ++statistics_.abandoned_augmentations;
     return true;
   };
-  for (int iteration = 0;; ++iteration, ++since_change) {
+  for (int iteration = 0;; ++iteration, budget.next()) {
     report.residual_history.push_back(current.relative);
     report.residual_norm = current.relative;
     report.iterations = iteration;
     if (on_progress) on_progress(report);
     if (!std::isfinite(current.relative)) return fail(AttemptFailure::kNotFinite);
-    // Diverging (kDivergenceCheckAfter).
-    if (since_change >= kDivergenceCheckAfter && current.relative > round_start) return fail(AttemptFailure::kDiverging);
+    if (budget.diverging(current.relative)) return fail(AttemptFailure::kDiverging);
     const Convergence decision =
         convergence_.decide(current, {iteration == 0, report.corrections, last_correction2_, increment_displacement2, previous_reference});
     if (decision.converged && (!augmented || dofs_.equation_count == 0)) {
@@ -348,13 +345,12 @@ bool StaticAnalysis::solve_increment(const IncrementAttempt& attempt, const std:
         augmented = true;
       }
       if (++rounds > kMaxContactRounds) return fail(AttemptFailure::kContactRounds);
-      since_change = 0;
       current = evaluate_residual(rhs);
       accept_iterate();
-      round_start = current.relative;
+      budget.restart(current.relative);
       continue;
     }
-    if (since_change == opt.max_iterations) return fail(AttemptFailure::kIterationLimit);
+    if (budget.spent()) return fail(AttemptFailure::kIterationLimit);
     ++statistics_.newton_iterations;
     ++report.corrections;
     {
@@ -394,8 +390,7 @@ bool StaticAnalysis::solve_increment(const IncrementAttempt& attempt, const std:
     last_correction2_ = step.limited ? std::max(step.accepted.correction2, step.full_correction2) : step.accepted.correction2;
     previous_reference = current.state.force;
     current = step.accepted.check;
-    // The divergence check measures an attempt from where its searched corrections start: after the full first one.
-    if (first_correction) round_start = std::max(round_start, current.relative);
+    if (first_correction) budget.first_correction_left(current.relative);
     accept_iterate();
     // A correction longer than the model itself is divergence, not progress: cut back at once.
     if (last_correction2_ > model_extent2_) return fail(AttemptFailure::kRunaway);
