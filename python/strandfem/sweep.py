@@ -51,8 +51,9 @@ def sweep(case, variants, out_dir, key=None, processes=None, threads=1, executor
 
     variants: values of `key` ("contact.friction"), or dicts {key: value, ...} without it.
     processes: variants solved at once on this machine (default: its cores / threads), each with `threads`.
-    mpi: the script runs under `mpiexec -n N`; the N ranks (on one machine or several) share the variants in turn,
-    each solving its own with `threads`, and every rank returns the whole table (rank 0 writes sweep.csv).
+    mpi: the script runs under `mpiexec -n N`; the N ranks (on one machine or several) take the variants from a
+    shared queue, each the next one not yet taken when it is free, solving it with `threads`; every rank returns the
+    whole table (rank 0 writes sweep.csv).
     executor: a concurrent.futures executor to use instead, e.g. mpi4py.futures.MPIPoolExecutor().
     plots: also draw out_dir/sweep.png (strandfem.plot.sweep), as `strandfem sweep` does.
     Every variant is read and checked before any runs; a variant that stops or fails has its status in its row.
@@ -71,9 +72,10 @@ def sweep(case, variants, out_dir, key=None, processes=None, threads=1, executor
     if mpi:
         from mpi4py import MPI
         comm = MPI.COMM_WORLD
-        rank, size = comm.Get_rank(), comm.Get_size()
-        mine = {i: _row(job[0], job[2], _run_here(job, threads), header)
-                for i, job in enumerate(jobs) if i % size == rank}
+        rank = comm.Get_rank()
+        mine = {}
+        for i in _shared_queue(comm, len(jobs)):
+            mine[i] = _row(jobs[i][0], jobs[i][2], _run_here(jobs[i], threads), header)
         everything = {}
         for part in comm.allgather(mine):
             everything.update(part)
@@ -94,6 +96,31 @@ def sweep(case, variants, out_dir, key=None, processes=None, threads=1, executor
             from strandfem import plot
             plot.sweep(out_dir)
     return table
+
+
+def _shared_queue(comm, count):
+    """Variant indices for this rank: each rank takes the next one not yet taken whenever it is free (a counter on
+    rank 0 that every rank fetches and increments), so that a long variant does not hold up the ones behind it."""
+    import numpy
+    from mpi4py import MPI
+
+    item = MPI.INT64_T.Get_size()
+    window = MPI.Win.Allocate(item if comm.Get_rank() == 0 else 0, item, comm=comm)
+    if comm.Get_rank() == 0:
+        window.Lock(0)
+        window.Put(numpy.zeros(1, dtype=numpy.int64), 0)
+        window.Unlock(0)
+    comm.Barrier()
+    one, taken = numpy.ones(1, dtype=numpy.int64), numpy.zeros(1, dtype=numpy.int64)
+    while True:
+        window.Lock(0)
+        window.Fetch_and_op(one, taken, 0, 0, MPI.SUM)
+        window.Unlock(0)
+        if taken[0] >= count:
+            break
+        yield int(taken[0])
+    comm.Barrier()  # no rank frees the counter while another may still fetch from it
+    window.Free()
 
 
 def _collect(executor, jobs, threads, header):

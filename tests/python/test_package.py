@@ -178,6 +178,31 @@ class PythonPackage(unittest.TestCase):
                     self.assertTrue(math.isclose(a, b, rel_tol=1e-7), (column, a, b))
 
     @unittest.skipUnless(MPI_SWEEP, "needs mpi4py and mpiexec")
+    def test_mpi_ranks_share_one_queue_of_variants(self):
+        # The rank that takes variant 0 stays busy with it for a second; the other takes every variant after it.
+        script = (
+            "import sys, time\n"
+            "from mpi4py import MPI\n"
+            "from strandfem.sweep import _shared_queue\n"
+            "taken = []\n"
+            "for i in _shared_queue(MPI.COMM_WORLD, 6):\n"
+            "    taken.append(i)\n"
+            "    if i == 0:\n"
+            "        time.sleep(1.0)\n"
+            "open(f'{sys.argv[1]}_{MPI.COMM_WORLD.Get_rank()}', 'w').write(' '.join(map(str, taken)))\n")
+        with tempfile.TemporaryDirectory() as folder:
+            run = _run_under_mpiexec(script, 2, [], os.path.join(folder, "queue"))
+            self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
+            taken = []
+            for rank in (0, 1):
+                with open(os.path.join(folder, f"queue_{rank}")) as f:
+                    taken.append([int(i) for i in f.read().split()])
+            self.assertEqual(sorted(taken[0] + taken[1]), list(range(6)), taken)  # each variant once
+            busy = 0 if 0 in taken[0] else 1
+            self.assertEqual(taken[busy], [0], taken)
+            self.assertEqual(taken[1 - busy], [1, 2, 3, 4, 5], taken)
+
+    @unittest.skipUnless(MPI_SWEEP, "needs mpi4py and mpiexec")
     def test_sweep_through_an_mpi4py_pool(self):
         script = (
             "import sys, strandfem\n"
