@@ -53,7 +53,7 @@ def sweep(case, variants, out_dir, key=None, processes=None, threads=1, executor
     processes: variants solved at once on this machine (default: its cores / threads), each with `threads`.
     mpi: the script runs under `mpiexec -n N`; the N ranks (on one machine or several) take the variants from a
     shared queue, each the next one not yet taken when it is free, solving it with `threads`; every rank returns the
-    whole table (rank 0 writes sweep.csv).
+    whole table (rank 0 writes sweep.csv). Each rank's OpenBLAS runs `threads` threads too.
     executor: a concurrent.futures executor to use instead, e.g. mpi4py.futures.MPIPoolExecutor().
     plots: also draw out_dir/sweep.png (strandfem.plot.sweep), as `strandfem sweep` does.
     Every variant is read and checked before any runs; a variant that stops or fails has its status in its row.
@@ -73,6 +73,7 @@ def sweep(case, variants, out_dir, key=None, processes=None, threads=1, executor
         from mpi4py import MPI
         comm = MPI.COMM_WORLD
         rank = comm.Get_rank()
+        _limit_blas_threads(threads)
         mine = {}
         for i in _shared_queue(comm, len(jobs)):
             mine[i] = _row(jobs[i][0], jobs[i][2], _run_here(jobs[i], threads), header)
@@ -96,6 +97,15 @@ def sweep(case, variants, out_dir, key=None, processes=None, threads=1, executor
             from strandfem import plot
             plot.sweep(out_dir)
     return table
+
+
+def _limit_blas_threads(threads):
+    """OpenBLAS (MUMPS's BLAS) would otherwise take every core in each rank: ranks sharing a machine oversubscribe it."""
+    import ctypes
+    try:
+        ctypes.CDLL("libopenblas.so.0").openblas_set_num_threads(threads)
+    except (OSError, AttributeError):
+        pass  # another BLAS: its own threads setting applies
 
 
 def _shared_queue(comm, count):

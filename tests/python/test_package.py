@@ -177,6 +177,21 @@ class PythonPackage(unittest.TestCase):
                 for a, b in zip(parallel[column], serial[column]):
                     self.assertTrue(math.isclose(a, b, rel_tol=1e-7), (column, a, b))
 
+    def test_an_mpi_rank_limits_openblas_to_its_threads(self):
+        import ctypes
+        try:
+            openblas = ctypes.CDLL("libopenblas.so.0")
+        except OSError:
+            self.skipTest("the package is not linked with OpenBLAS")
+        from strandfem.sweep import _limit_blas_threads
+        before = openblas.openblas_get_num_threads()
+        try:
+            for threads in (1, 2):
+                _limit_blas_threads(threads)
+                self.assertEqual(openblas.openblas_get_num_threads(), threads)
+        finally:
+            openblas.openblas_set_num_threads(before)
+
     @unittest.skipUnless(MPI_SWEEP, "needs mpi4py and mpiexec")
     def test_mpi_ranks_share_one_queue_of_variants(self):
         # The rank that takes variant 0 stays busy with it for a second; the other takes every variant after it.
