@@ -165,9 +165,7 @@ class PythonPackage(unittest.TestCase):
         with tempfile.TemporaryDirectory() as folder:
             run = _run_under_mpiexec(script, 2, [], os.path.join(folder, "mpi"))
             self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
-            for rank in (0, 1):  # every rank has the whole table
-                with open(os.path.join(folder, f"mpi_rows_{rank}")) as f:
-                    self.assertEqual(f.read(), "3")
+            self.assertEqual(_per_rank_outputs(os.path.join(folder, "mpi_rows"), 2), ["3", "3"])  # the whole table
             serial = strandfem.sweep(strandfem.Case.from_dict(data), [0.05, 0.2, 0.3], os.path.join(folder, "serial"),
                                      key="contact.friction", processes=1)
             import pandas
@@ -208,10 +206,7 @@ class PythonPackage(unittest.TestCase):
         with tempfile.TemporaryDirectory() as folder:
             run = _run_under_mpiexec(script, 2, [], os.path.join(folder, "queue"))
             self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
-            taken = []
-            for rank in (0, 1):
-                with open(os.path.join(folder, f"queue_{rank}")) as f:
-                    taken.append([int(i) for i in f.read().split()])
+            taken = [[int(i) for i in text.split()] for text in _per_rank_outputs(os.path.join(folder, "queue"), 2)]
             self.assertEqual(sorted(taken[0] + taken[1]), list(range(6)), taken)  # each variant once
             busy = 0 if 0 in taken[0] else 1
             self.assertEqual(taken[busy], [0], taken)
@@ -323,6 +318,15 @@ def _run_under_mpiexec(script, ranks, python_options, out):
     return subprocess.run([MPIEXEC, "--allow-run-as-root", "--oversubscribe", "-n", str(ranks), sys.executable,
                            *python_options, path, out], capture_output=True, text=True, timeout=240,
                           env=_without_mpi_singleton())
+
+
+def _per_rank_outputs(prefix, ranks):
+    """What each rank of a script run by _run_under_mpiexec wrote to PREFIX_<rank>."""
+    outputs = []
+    for rank in range(ranks):
+        with open(f"{prefix}_{rank}") as f:
+            outputs.append(f.read())
+    return outputs
 
 
 def _without_mpi_singleton():
