@@ -2,8 +2,10 @@
 as pandas tables, sweeps over processes or MPI ranks, and the closed-form references (docs/python.md)."""
 from strandfem._core import CaseError, __version__, build_info
 from strandfem import plot, references
+from strandfem.build import Layer, Material, Step, Strand
 from strandfem.case import Case
 from strandfem.results import Results, read_results
 from strandfem.sweep import sweep
 
-__all__ = ["Case", "CaseError", "Results", "build_info", "plot", "read_results", "references", "sweep", "__version__"]
+__all__ = ["Case", "CaseError", "Layer", "Material", "Results", "Step", "Strand", "build_info", "plot", "read_results",
+           "references", "sweep", "__version__"]

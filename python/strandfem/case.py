@@ -1,7 +1,7 @@
 """A strand case: from a case file or from Python data, checked by the library's reader, run into a folder."""
 import os
 
-from strandfem import _core
+from strandfem import _core, build
 from strandfem.results import Results
 
 
@@ -27,6 +27,13 @@ class Case:
         """A case from nested dicts and lists with the case file's keys (docs/case-files.md); `name` stands for
         the file in messages."""
         return cls.from_text(_yaml_text(data), name)
+
+    @classmethod
+    def build(cls, strand, steps, title=None, name="<built>", **sections):
+        """A case from objects: a strandfem.Strand (its layers name their strandfem.Material), a list of
+        strandfem.Step, and further sections (mesh, contact, solver, output, supports) as dicts with the case file's
+        keys. The materials section is collected from the layers."""
+        return cls.from_dict(build.case_data(strand, steps, title, **sections), name)
 
     @classmethod
     def from_text(cls, text, name="<text>"):

@@ -63,6 +63,26 @@ class PythonPackage(unittest.TestCase):
         line = int(message.split(":")[1])  # my_strand:LINE:COLUMN: ...
         self.assertIn("frction", _yaml_text(data).splitlines()[line - 1])
 
+    def test_case_built_from_objects_is_the_case_from_data(self):
+        steel = strandfem.Material("steel", E=188000, nu=0.3)
+        strand = strandfem.Strand(length=100, layers=[strandfem.Layer(1, 3.94, steel),
+                                                      strandfem.Layer(6, 3.73, steel, lay_angle=11.8)])
+        built = strandfem.Case.build(strand, [strandfem.Step("pull", 4, axial_strain=0.004)],
+                                     title="7-wire strand from Python", contact={"friction": 0.115}, output={"vtu": False})
+        self.assertEqual(built.to_yaml(), strandfem.Case.from_dict(seven_wire()).to_yaml())
+
+    def test_built_case_is_checked_by_the_reader(self):
+        steel = strandfem.Material("steel", E=188000, nu=0.3)
+        strand = strandfem.Strand(length=100, layers=[strandfem.Layer(1, 3.94, steel),
+                                                      strandfem.Layer(6, 3.73, steel, lay_angle=95)])
+        with self.assertRaises(strandfem.CaseError) as caught:
+            strandfem.Case.build(strand, [strandfem.Step("pull", 4, axial_strain=0.004)], name="built")
+        self.assertIn("lay_angle", str(caught.exception))
+        self.assertIn("built:", str(caught.exception))
+        other = strandfem.Material("steel", E=70000, nu=0.33)
+        with self.assertRaises(ValueError):
+            strandfem.Strand(length=100, layers=[strandfem.Layer(1, 3.94, steel), strandfem.Layer(6, 3.73, other, lay_angle=11.8)]).materials()
+
     def test_missing_file_is_a_case_error(self):
         with self.assertRaises(strandfem.CaseError):
             strandfem.Case.from_yaml(os.path.join(SOURCE, "no_such_case.yaml"))
@@ -143,11 +163,13 @@ class PythonPackage(unittest.TestCase):
             self.assertTrue(os.path.exists(os.path.join(folder, "sweep", "sweep.csv")))
 
     def test_table_1_strand_built_in_python_has_the_papers_slope(self):
-        data = seven_wire(increments=4, strain=0.004)
-        data["strand"]["length"] = 200
-        data["mesh"] = {"elements_per_wire": 24}
+        steel = strandfem.Material("steel", E=188000, nu=0.3)
+        strand = strandfem.Strand(length=200, layers=[strandfem.Layer(1, 3.94, steel),
+                                                      strandfem.Layer(6, 3.73, steel, lay_angle=11.8)])
+        case = strandfem.Case.build(strand, [strandfem.Step("pull", 4, axial_strain=0.004)], title="Table 1",
+                                    mesh={"elements_per_wire": 24}, contact={"friction": 0.115}, output={"vtu": False})
         with tempfile.TemporaryDirectory() as folder:
-            h = strandfem.Case.from_dict(data).run(os.path.join(folder, "t1"), threads=1).history
+            h = case.run(os.path.join(folder, "t1"), threads=1).history
             strain, force = h["axial_strain"].to_numpy(), h["axial_force_N"].to_numpy()
             slope = float((strain * force).sum() / (strain * strain).sum())  # least squares through the origin
             self.assertLess(abs(slope / 13.85e6 - 1), 0.01, slope)  # paper Table 1, fixed ends: 13.85 MN
