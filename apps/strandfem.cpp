@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <new>
 #include <omp.h>
@@ -25,6 +26,7 @@
 #include "strandfem/post/run_report.hpp"
 #include "strandfem/solver/blas_kernels.hpp"
 #include "strandfem/solver/mumps_processes.hpp"
+#include "strandfem/solver/process_queue.hpp"
 
 #include "strandfem_git_revision.hpp"  // generated at build time (cmake/GitRevision.cmake)
 
@@ -187,9 +189,12 @@ int run_case_file(const std::string& case_path, const std::string& output_dir, i
 // variant) and sweep.png (their curves on one plot, scripts/plot_sweep.py). With a key, one case with that key set
 // to each value (the variants' case files are written into output_dir/cases); without, the case files as given.
 // --set KEY=VALUE settings apply to every variant (their case files then go to output_dir/cases in both forms).
-// Every variant is read and checked before any is run. Returns 0 when all converged, else the first failure's code.
+// Every variant is read and checked before any is run. Under mpiexec the processes take the variants from one
+// queue, and rank 0 writes the files; the folder must be shared. Returns 0 when all converged, else the first
+// failure's code.
 int run_sweep(const std::vector<std::string>& cases, const std::string& key, const std::vector<std::string>& values,
-              const std::vector<std::string>& fixed_settings, const std::string& output_dir, int threads, bool quiet) {
+              const std::vector<std::string>& fixed_settings, const std::string& output_dir, int threads, bool quiet,
+              int rank) {
   namespace fs = std::filesystem;
   struct Variant {
     std::string name, value, case_file;
@@ -221,8 +226,9 @@ int run_sweep(const std::vector<std::string>& cases, const std::string& key, con
       text = strandfem::set_case_key(text, setting_key, setting_value);
       what += (what.empty() ? " with " : ", ") + setting_key + " = " + setting_value;
     }
-    fs::create_directories(fs::path(output_dir) / "cases");
     v.case_file = (fs::path(output_dir) / "cases" / (v.name + ".yaml")).string();
+    if (rank > 0) return;
+    fs::create_directories(fs::path(output_dir) / "cases");
     std::ofstream out(v.case_file);
     out << "# " << source << what << " (strandfem sweep)\n" << text;
     if (!out) throw strandfem::OutputError("cannot write " + v.case_file);
@@ -246,14 +252,23 @@ int run_sweep(const std::vector<std::string>& cases, const std::string& key, con
       variants.push_back(v);
     }
   }
+  strandfem::ProcessQueue queue(static_cast<int>(variants.size()));  // after rank 0 wrote the case files
   for (const Variant& v : variants) strandfem::load_case(v.case_file);  // bad input stops the sweep before it runs
-  int result = 0;
-  for (Variant& v : variants) {
-    if (!quiet) std::cerr << "sweep: " << v.name << "\n";
-    v.exit_code = run_case_file(v.case_file, (fs::path(output_dir) / v.name).string(), threads, true, false, false, false, 0);
-    if (!quiet) std::cerr << "sweep: " << v.name << (v.exit_code == 0 ? " done" : " failed, exit code " + std::to_string(v.exit_code)) << "\n";
-    if (result == 0) result = v.exit_code;
+  const std::string who = queue.processes() > 1 ? "sweep (process " + std::to_string(rank) + "): " : "sweep: ";
+  std::vector<int> exit_codes(variants.size(), std::numeric_limits<int>::min());
+  for (int i = queue.next(); i >= 0; i = queue.next()) {
+    const Variant& v = variants[i];
+    if (!quiet) std::cerr << who << v.name << "\n";
+    exit_codes[i] = run_case_file(v.case_file, (fs::path(output_dir) / v.name).string(), threads, true, false, false, false, 0);
+    if (!quiet) std::cerr << who << v.name << (exit_codes[i] == 0 ? " done" : " failed, exit code " + std::to_string(exit_codes[i])) << "\n";
   }
+  exit_codes = queue.largest(exit_codes);
+  int result = 0;
+  for (std::size_t i = 0; i < variants.size(); ++i) {
+    variants[i].exit_code = exit_codes[i];
+    if (result == 0) result = exit_codes[i];
+  }
+  if (rank > 0) return result;
   const std::string table = (fs::path(output_dir) / "sweep.csv").string();
   std::ofstream csv(table);
   csv << "variant,key,value,case_file,results,exit_code," << strandfem::sweep_result_header() << "\n";
@@ -296,8 +311,10 @@ int main(int argc, char** argv) {
   use_faster_blas_kernels(argv);
   keep_freed_memory();
   // Under `mpirun -np N` (MPI build of MUMPS) ranks above 0 only take part in rank 0's factorizations and solves.
-  strandfem::MumpsProcesses processes(argc, argv);
-  if (processes.rank() > 0) return processes.serve();
+  // `mpiexec -n N strandfem sweep`: every process runs variants of its own instead.
+  const bool sweep_command = argc > 1 && std::string(argv[1]) == "sweep";
+  strandfem::MumpsProcesses processes(argc, argv, sweep_command);
+  if (processes.serving() && processes.rank() > 0) return processes.serve();
   CLI::App app{"StrandFEM: finite elements for multilayered helical wire strands"};
   app.set_version_flag("--version", STRANDFEM_VERSION);
   app.require_subcommand(1);
@@ -347,7 +364,8 @@ int main(int argc, char** argv) {
       }
       return 0;
     }
-    if (sweep->parsed()) return run_sweep(sweep_cases, sweep_key, sweep_values, sweep_settings, output_dir, threads, quiet);
+    if (sweep->parsed()) return run_sweep(sweep_cases, sweep_key, sweep_values, sweep_settings, output_dir, threads, quiet,
+                                            processes.rank());
     return run_case_file(case_path, output_dir, threads, quiet, verbose, plots, resume, stop_after, dump_tangent);
   } catch (const strandfem::CaseError& e) {
     std::cerr << "error: " << e.what() << "\n";

@@ -11,13 +11,6 @@ using namespace strandfem::verification;
 
 namespace {
 
-#ifdef STRANDFEM_MPIEXEC
-// Two processes, unbound (Open MPI binds each rank to one core by default, which would leave rank 0's element
-// threads a single core), allowed where the tests run as root or on fewer cores.
-const std::string kTwoProcesses = std::string("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ") +
-                                  STRANDFEM_MPIEXEC + " --bind-to none --oversubscribe -np 2";
-#endif
-
 nlohmann::json solver_statistics(const ProgramRun& run) {
   return nlohmann::json::parse(std::ifstream(run.output / "results" / "summary.json")).at("solver_statistics");
 }

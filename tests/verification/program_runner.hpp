@@ -36,6 +36,13 @@ inline ProgramRun run_program(const std::string& arguments, const std::string& t
   return r;
 }
 
+#ifdef STRANDFEM_MPIEXEC
+// Two processes, unbound (Open MPI binds each rank to one core by default, which would leave rank 0's element
+// threads a single core), allowed where the tests run as root or on fewer cores.
+inline const std::string kTwoProcesses = std::string("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ") +
+                                         STRANDFEM_MPIEXEC + " --bind-to none --oversubscribe -np 2";
+#endif
+
 inline ProgramRun run_case(const std::string& case_file, const std::string& tag, const std::string& extra = "") {
   // run_program() empties the folder strandfem_<tag>; the program writes its results folder inside it.
   const auto results = std::filesystem::path(::testing::TempDir()) / ("strandfem_" + tag) / "results";

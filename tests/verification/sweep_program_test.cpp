@@ -103,5 +103,42 @@ TEST(Sweep, BadSettingsStopItBeforeAnythingRuns) {
   EXPECT_NE(run.stderr_text.find("already varied by --key"), std::string::npos) << run.stderr_text;
 }
 
+TEST(Sweep, TwoProcessesShareTheVariantsAndGiveTheSerialNumbers) {
+#ifndef STRANDFEM_MPIEXEC
+  GTEST_SKIP() << "built on sequential MUMPS";
+#else
+  const auto base = std::filesystem::path(::testing::TempDir()) / "strandfem_sweep_processes";
+  const std::string variants = " --key contact.friction --values 0,0.3,5 -t 1 -o ";
+  const ProgramRun serial = run_program("sweep " + case_path(kCase) + variants + (base / "serial").string() + " -q", "sweep_serial");
+  ASSERT_EQ(serial.exit_code, 0) << serial.stderr_text;
+  const ProgramRun two = run_program("sweep " + case_path(kCase) + variants + (base / "two").string(), "sweep_two", kTwoProcesses);
+  ASSERT_EQ(two.exit_code, 0) << two.stderr_text;
+  // Both processes took variants from the one queue, and rank 0 wrote the table and the figure.
+  EXPECT_NE(two.stderr_text.find("sweep (process 0): contact.friction="), std::string::npos) << two.stderr_text;
+  EXPECT_NE(two.stderr_text.find("sweep (process 1): contact.friction="), std::string::npos) << two.stderr_text;
+  EXPECT_TRUE(std::filesystem::exists(base / "two" / "sweep.png")) << two.stderr_text;
+  const auto one_process = read_csv(base / "serial" / "sweep.csv");
+  const auto two_processes = read_csv(base / "two" / "sweep.csv");
+  ASSERT_EQ(one_process.size(), 3u);
+  ASSERT_EQ(two_processes.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(two_processes[i].at("value"), one_process[i].at("value"));
+    EXPECT_EQ(two_processes[i].at("exit_code"), 0.0);
+    // The same model on one process each: the same path, to the solver's tolerance.
+    EXPECT_NEAR(two_processes[i].at("peak_deflection_mm"), one_process[i].at("peak_deflection_mm"),
+                1e-6 * one_process[i].at("peak_deflection_mm"));
+    EXPECT_NEAR(two_processes[i].at("secant_ei_Nm2"), one_process[i].at("secant_ei_Nm2"), 1e-5 * one_process[i].at("secant_ei_Nm2"));
+    EXPECT_NEAR(two_processes[i].at("loop_area_Nmm"), one_process[i].at("loop_area_Nmm"),
+                1e-3 * std::abs(one_process[i].at("loop_area_Nmm")) + 1e-6);
+  }
+  // Bad input stops every process before anything runs, with the input error's code.
+  const ProgramRun bad = run_program("sweep " + case_path(kCase) + " --key contact.friction --values 0.3,-1 -q -o " +
+                                         (base / "bad").string(), "sweep_two_bad", kTwoProcesses);
+  EXPECT_EQ(bad.exit_code, 2) << bad.stderr_text;
+  EXPECT_NE(bad.stderr_text.find("contact.friction"), std::string::npos) << bad.stderr_text;
+  EXPECT_FALSE(std::filesystem::exists(base / "bad" / "contact.friction=0.3" / "history.csv"));
+#endif
+}
+
 }  // namespace
 }  // namespace strandfem::verification

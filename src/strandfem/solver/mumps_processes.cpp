@@ -120,7 +120,7 @@ void serve_call(std::map<std::uint64_t, std::unique_ptr<Struct>>& instances, con
 
 }  // namespace
 
-MumpsProcesses::MumpsProcesses(int& argc, char**& argv) {
+MumpsProcesses::MumpsProcesses(int& argc, char**& argv, bool each_alone) {
 #ifdef STRANDFEM_MUMPS_MPI
   // Without mpiexec MPI starts only when a MUMPS solver is first made (mumps_communicator), so that commands
   // that factor nothing (`info`, bad input) do not pay for it.
@@ -129,15 +129,18 @@ MumpsProcesses::MumpsProcesses(int& argc, char**& argv) {
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   count_ = world_size();
   if (count_ > 1) set_blas_threads(1);
+  if (each_alone) factor_within_this_process();
+  serving_ = count_ > 1 && !each_alone;
 #else
   (void)argc;
   (void)argv;
+  (void)each_alone;
 #endif
 }
 
 MumpsProcesses::~MumpsProcesses() {
 #ifdef STRANDFEM_MUMPS_MPI
-  if (rank_ == 0 && count_ > 1) {
+  if (rank_ == 0 && serving_) {
     Command release;
     release.precision = kRelease;
     for (int r = 1; r < count_; ++r) MPI_Send(&release, sizeof release, MPI_BYTE, r, kCommandTag, MPI_COMM_WORLD);

@@ -10,18 +10,23 @@ namespace strandfem {
 // processes are what use the cores in a factorization.
 class MumpsProcesses {
  public:
-  MumpsProcesses(int& argc, char**& argv);
+  // each_alone: every process solves models of its own and factors them within itself (`strandfem sweep`, whose
+  // processes take variants from a ProcessQueue); no rank serves another.
+  MumpsProcesses(int& argc, char**& argv, bool each_alone = false);
   ~MumpsProcesses();
   MumpsProcesses(const MumpsProcesses&) = delete;
   MumpsProcesses& operator=(const MumpsProcesses&) = delete;
   int rank() const { return rank_; }
   int count() const { return count_; }
+  // Whether ranks above 0 serve rank 0's MUMPS calls (more than one process, not each alone).
+  bool serving() const { return serving_; }
   // On ranks above 0: takes part in every MUMPS call rank 0 makes until rank 0 releases it; returns the exit code.
   int serve();
 
  private:
   int rank_ = 0;
   int count_ = 1;
+  bool serving_ = false;
   bool started_mpi_ = false;
 };
 
