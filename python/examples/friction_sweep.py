@@ -9,21 +9,16 @@ import sys
 
 import strandfem
 
-STRAND = {
-    "title": "7-wire strand bent under tension",
-    "materials": {"steel": {"E": 188000, "nu": 0.3}},
-    "strand": {"length": 300, "layers": [{"wires": 1, "diameter": 3.94, "material": "steel"},
-                                         {"wires": 6, "diameter": 3.73, "material": "steel", "lay_angle": 11.8}]},
-    "contact": {"friction": 0.3},
-    "steps": [{"name": "tension", "increments": 5, "axial_force": 30000},
-              {"name": "bend", "increments": 10, "cycles": 1,
-               "transverse_force": {"value": 500, "z": 150, "direction": [0, 1, 0]}}],
-    "output": {"vtu": False},
-}
+STEEL = strandfem.Material("steel", E=188000, nu=0.3)
+STRAND = strandfem.Strand(length=300, layers=[strandfem.Layer(1, 3.94, STEEL),
+                                              strandfem.Layer(6, 3.73, STEEL, lay_angle=11.8)])
+STEPS = [strandfem.Step("tension", 5, axial_force=30000),
+         strandfem.Step("bend", 10, cycles=1, transverse_force={"value": 500, "z": 150, "direction": [0, 1, 0]})]
 
 if __name__ == "__main__":  # the variants run in fresh interpreters, which import this file
     out = sys.argv[1] if len(sys.argv) > 1 else "friction_sweep"
-    case = strandfem.Case.from_dict(STRAND, name="friction_sweep")
+    case = strandfem.Case.build(STRAND, STEPS, title="7-wire strand bent under tension", contact={"friction": 0.3},
+                                output={"vtu": False}, name="friction_sweep")
     table = strandfem.sweep(case, [0.1, 0.3, 0.5], out, key="contact.friction", processes=2)
     refs = case.references()
     print(table[["contact.friction", "status", "peak_deflection_mm", "loop_area_Nmm", "secant_ei_Nm2"]].to_string(index=False))
