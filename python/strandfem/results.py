@@ -60,6 +60,21 @@ class Results:
             self._cache[file] = pandas.read_csv(path)
         return self._cache[file]
 
+    def arrays(self, name, *columns):
+        """Columns of a table as numpy arrays: `strain, force = results.arrays("history", "axial_strain",
+        "axial_force_N")`; one column gives one array, none gives a dict of every column. KeyError names a column
+        the table lacks; None where the run wrote no such file."""
+        frame = self.table(name)
+        if frame is None:
+            return None
+        missing = [c for c in columns if c not in frame.columns]
+        if missing:
+            raise KeyError(f"{name} has no column {', '.join(missing)} (it has {', '.join(frame.columns)})")
+        if not columns:
+            return {c: frame[c].to_numpy() for c in frame.columns}
+        arrays = tuple(frame[c].to_numpy() for c in columns)
+        return arrays[0] if len(arrays) == 1 else arrays
+
     @classmethod
     def tables(cls):
         """The tables by name (also attributes: results.history) and their files."""

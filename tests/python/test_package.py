@@ -169,8 +169,13 @@ class PythonPackage(unittest.TestCase):
         case = strandfem.Case.build(strand, [strandfem.Step("pull", 4, axial_strain=0.004)], title="Table 1",
                                     mesh={"elements_per_wire": 24}, contact={"friction": 0.115}, output={"vtu": False})
         with tempfile.TemporaryDirectory() as folder:
-            h = case.run(os.path.join(folder, "t1"), threads=1).history
-            strain, force = h["axial_strain"].to_numpy(), h["axial_force_N"].to_numpy()
+            results = case.run(os.path.join(folder, "t1"), threads=1)
+            strain, force = results.arrays("history", "axial_strain", "axial_force_N")
+            self.assertEqual(list(force), list(results.history["axial_force_N"]))
+            self.assertEqual(sorted(results.arrays("history")), sorted(results.history.columns))
+            with self.assertRaises(KeyError):
+                results.arrays("history", "no_such_column")
+            self.assertIsNone(results.arrays("loops"))  # an axial run writes no loops
             slope = float((strain * force).sum() / (strain * strain).sum())  # least squares through the origin
             self.assertLess(abs(slope / 13.85e6 - 1), 0.01, slope)  # paper Table 1, fixed ends: 13.85 MN
 
