@@ -5,7 +5,7 @@ from strandfem import plot, references
 from strandfem.build import Layer, Material, Step, Strand
 from strandfem.case import Case
 from strandfem.results import Results, read_results
-from strandfem.sweep import sweep
+from strandfem.sweep import product, sweep
 
-__all__ = ["Case", "CaseError", "Layer", "Material", "Results", "Step", "Strand", "build_info", "plot", "read_results",
-           "references", "sweep", "__version__"]
+__all__ = ["Case", "CaseError", "Layer", "Material", "Results", "Step", "Strand", "build_info", "plot", "product",
+           "read_results", "references", "sweep", "__version__"]

@@ -43,13 +43,35 @@ def _run_here(job, threads):
         return e
 
 
+def product(values):
+    """Every combination of several keys' values, as variants for sweep(): product({"contact.friction": [0.3, 0.5],
+    "strand.length": [300, 500]}) gives four dicts, the last key varying fastest."""
+    import itertools
+    keys = list(values)
+    return [dict(zip(keys, combination)) for combination in itertools.product(*(values[k] for k in keys))]
+
+
+def _case_jobs(cases, out_dir):
+    """One job per case of a list, named after its file (or name) as `strandfem sweep CASE...` names them."""
+    jobs, names = [], set()
+    for case in cases:
+        name = os.path.splitext(os.path.basename(case._name.split(" [")[0]))[0] or "case"  # "[...]": a variant's keys
+        if name in names:
+            name += f"_{len(jobs) + 1}"
+        names.add(name)
+        jobs.append(({"case": case._name}, case, os.path.join(os.fspath(out_dir), name)))
+    return jobs
+
+
 def sweep(case, variants, out_dir, key=None, processes=None, threads=1, executor=None, mpi=False, plots=False):
     """Runs the variants of `case` into out_dir/<variant> and returns one row per variant as a DataFrame (also
     written to out_dir/sweep.csv): the variant's keys, its name and folder, and the columns of `strandfem sweep`'s
     sweep.csv (status; axial strain, force, secant stiffness and its ratio to the theory; for bending the cycles and
     the last cycle's peak load, peak deflection, loop area, secant EI and return loop area).
 
-    variants: values of `key` ("contact.friction"), or dicts {key: value, ...} without it.
+    case: a Case, or a list of Cases run as they are (variants then None; each row's `case` names it).
+    variants: values of `key` ("contact.friction"), or dicts {key: value, ...} without it (product() makes them for
+    several keys at once).
     processes: variants solved at once on this machine (default: its cores / threads), each with `threads`.
     mpi: the script runs under `mpiexec -n N`; the N ranks (on one machine or several) take the variants from a
     shared queue, each the next one not yet taken when it is free, solving it with `threads`; every rank returns the
@@ -60,12 +82,17 @@ def sweep(case, variants, out_dir, key=None, processes=None, threads=1, executor
     """
     import pandas
 
-    variants = [{key: v} for v in variants] if key is not None else [dict(v) for v in variants]
-    jobs = []
-    for values in variants:
-        variant = case.with_values(values)
-        name = ",".join(_core.variant_folder_name(k, _yaml_scalar(v)) for k, v in values.items())
-        jobs.append((values, variant, os.path.join(os.fspath(out_dir), name)))
+    if isinstance(case, (list, tuple)):
+        if variants is not None or key is not None:
+            raise ValueError("sweep: a list of cases runs the cases as they are; give variants of one case instead")
+        jobs = _case_jobs(case, out_dir)
+    else:
+        variants = [{key: v} for v in variants] if key is not None else [dict(v) for v in variants]
+        jobs = []
+        for values in variants:
+            variant = case.with_values(values)
+            name = ",".join(_core.variant_folder_name(k, _yaml_scalar(v)) for k, v in values.items())
+            jobs.append((values, variant, os.path.join(os.fspath(out_dir), name)))
     os.makedirs(out_dir, exist_ok=True)
     header = _core.sweep_result_header().split(",")
     write = True

@@ -143,6 +143,26 @@ class PythonPackage(unittest.TestCase):
         self.assertGreater(refs["ei_max_Nm2"], refs["ei_min_Nm2"])
         self.assertGreaterEqual(refs["axial_stiffness_fixed_N"], refs["axial_stiffness_free_N"])
 
+    def test_sweep_of_a_product_of_keys_and_of_a_list_of_cases(self):
+        grid = strandfem.product({"contact.friction": [0.1, 0.3], "strand.length": [60, 80]})
+        self.assertEqual(grid, [{"contact.friction": 0.1, "strand.length": 60}, {"contact.friction": 0.1, "strand.length": 80},
+                                {"contact.friction": 0.3, "strand.length": 60}, {"contact.friction": 0.3, "strand.length": 80}])
+        short = strandfem.Case.from_dict(seven_wire(increments=1, strain=0.001), name="short.yaml")
+        with tempfile.TemporaryDirectory() as folder:
+            table = strandfem.sweep(short, grid[:2], os.path.join(folder, "grid"), processes=1)
+            self.assertEqual(list(table["strand.length"]), [60, 80])
+            self.assertEqual(list(table["status"]), ["converged"] * 2)
+            longer = short.with_values({"strand.length": 150})
+            table = strandfem.sweep([short, longer], None, os.path.join(folder, "cases"), processes=1)
+            self.assertEqual(list(table["status"]), ["converged"] * 2)
+            self.assertEqual([os.path.basename(f) for f in table["folder"]], ["short", "short_2"])
+            # The same strain on a longer strand: the same force, each case solved as it is.
+            force = list(table["axial_force_N"])
+            self.assertLess(abs(force[1] / force[0] - 1), 0.02, force)
+            self.assertEqual(strandfem.read_results(table["folder"][1]).summary["strand_length_mm"], 150)
+        with self.assertRaises(ValueError):
+            strandfem.sweep([short], [0.1], folder, key="contact.friction")
+
     def test_variant_sets_the_key_and_checks_it(self):
         case = strandfem.Case.from_dict(seven_wire())
         variant = case.with_values({"contact.friction": 0.3, "strand.layers.1.lay_angle": 12.5})
