@@ -8,7 +8,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <limits>
 #include <sstream>
 #include <new>
 #include <omp.h>
@@ -18,7 +17,7 @@
 #include "strandfem/io/case_file.hpp"
 #include "strandfem/core/archive.hpp"
 #include "strandfem/io/case_run.hpp"
-#include "strandfem/io/case_variant.hpp"
+#include "strandfem/io/case_sweep.hpp"
 #include "strandfem/io/output_file.hpp"
 #include "plot_scripts.hpp"
 #include "strandfem/analysis/load_protocol.hpp"
@@ -27,6 +26,7 @@
 #include "strandfem/solver/blas_kernels.hpp"
 #include "strandfem/solver/mumps_processes.hpp"
 #include "strandfem/solver/process_queue.hpp"
+#include "strandfem/io/result_writer.hpp"
 
 #include "strandfem_git_revision.hpp"  // generated at build time (cmake/GitRevision.cmake)
 
@@ -127,15 +127,9 @@ class RunProgress {
 };
 
 // A results folder's summary.json; an empty object where there is none or it cannot be read.
-nlohmann::json read_summary(const std::filesystem::path& folder) {
-  std::ifstream in(folder / "summary.json");
-  nlohmann::json summary = nlohmann::json::parse(in, nullptr, false);
-  return summary.is_discarded() ? nlohmann::json::object() : summary;
-}
-
 // The end-of-run report on stdout, from the summary.json the run has just written.
 void print_report(const std::string& output_dir) {
-  const nlohmann::json summary = read_summary(output_dir);
+  const nlohmann::json summary = strandfem::read_summary(output_dir);
   if (summary.empty()) return;
   std::cout << strandfem::end_of_run_report(summary) << "results in " << output_dir << "\n";
 }
@@ -185,101 +179,22 @@ int run_case_file(const std::string& case_path, const std::string& output_dir, i
   return 0;
 }
 
-// strandfem sweep: a family of cases, each into its own results folder under output_dir, then sweep.csv (one row per
-// variant) and sweep.png (their curves on one plot, scripts/plot_sweep.py). With a key, one case with that key set
-// to each value (the variants' case files are written into output_dir/cases); without, the case files as given.
-// --set KEY=VALUE settings apply to every variant (their case files then go to output_dir/cases in both forms).
-// Every variant is read and checked before any is run. Under mpiexec the processes take the variants from one
-// queue, and rank 0 writes the files; the folder must be shared. Returns 0 when all converged, else the first
-// failure's code.
-int run_sweep(const std::vector<std::string>& cases, const std::string& key, const std::vector<std::string>& values,
-              const std::vector<std::string>& fixed_settings, const std::string& output_dir, int threads, bool quiet,
-              int rank) {
+// strandfem sweep: the variants through run_case_file, then (rank 0) their curves on one plot.
+int run_sweep_command(const strandfem::SweepDefinition& sweep, int threads, bool quiet) {
   namespace fs = std::filesystem;
-  struct Variant {
-    std::string name, value, case_file;
-    int exit_code = -1;
-  };
-  std::vector<Variant> variants;
-  // --set KEY=VALUE: the same setting in every variant, so that the variants' case files are written out too.
-  std::vector<std::pair<std::string, std::string>> settings;
-  for (const std::string& setting : fixed_settings) {
-    const auto equals = setting.find('=');
-    if (equals == std::string::npos || equals == 0 || equals + 1 == setting.size())
-      throw strandfem::CaseError("sweep --set: expected KEY=VALUE (e.g. contact.friction_direction=slave_wire), got '" +
-                                 setting + "'");
-    const std::string setting_key = setting.substr(0, equals);
-    if (setting_key == key) throw strandfem::CaseError("sweep --set " + setting_key + ": the key is already varied by --key");
-    for (const auto& earlier : settings)
-      if (earlier.first == setting_key) throw strandfem::CaseError("sweep --set " + setting_key + ": given twice");
-    settings.emplace_back(setting_key, setting.substr(equals + 1));
+  const auto variants = strandfem::run_sweep(
+      sweep,
+      [&](const strandfem::SweepVariant& v) {
+        return run_case_file(v.case_file, (fs::path(sweep.output_dir) / v.name).string(), threads, true, false, false, false, 0);
+      },
+      [&](const std::string& line) {
+        if (!quiet) std::cerr << line << "\n";
+      });
+  if (strandfem::process_rank() == 0) {
+    strandfem_app::draw_figures("plot_sweep.py", sweep.output_dir);
+    if (!quiet) std::cerr << "sweep of " << variants.size() << " cases in " << sweep.output_dir << " (sweep.csv, sweep.png)\n";
   }
-  const auto read_text = [](const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw strandfem::CaseError(path + ": cannot read the case file");
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-  };
-  const auto write_variant = [&](Variant& v, const std::string& source, std::string text, std::string what) {
-    for (const auto& [setting_key, setting_value] : settings) {
-      text = strandfem::set_case_key(text, setting_key, setting_value);
-      what += (what.empty() ? " with " : ", ") + setting_key + " = " + setting_value;
-    }
-    v.case_file = (fs::path(output_dir) / "cases" / (v.name + ".yaml")).string();
-    if (rank > 0) return;
-    fs::create_directories(fs::path(output_dir) / "cases");
-    std::ofstream out(v.case_file);
-    out << "# " << source << what << " (strandfem sweep)\n" << text;
-    if (!out) throw strandfem::OutputError("cannot write " + v.case_file);
-  };
-  if (!key.empty()) {
-    if (cases.size() != 1) throw strandfem::CaseError("sweep --key varies one case, got " + std::to_string(cases.size()));
-    if (values.empty()) throw strandfem::CaseError("sweep --key " + key + ": expected --values v1,v2,...");
-    const std::string text = read_text(cases[0]);
-    for (const std::string& value : values) {
-      Variant v{strandfem::variant_folder_name(key, value), value, ""};
-      write_variant(v, cases[0], strandfem::set_case_key(text, key, value), " with " + key + " = " + value);
-      variants.push_back(v);
-    }
-  } else {
-    if (!values.empty()) throw strandfem::CaseError("sweep --values needs --key");
-    for (const std::string& c : cases) {
-      Variant v{fs::path(c).stem().string(), "", c};
-      for (const Variant& other : variants)
-        if (other.name == v.name) v.name += "_" + std::to_string(variants.size() + 1);
-      if (!settings.empty()) write_variant(v, c, read_text(c), "");
-      variants.push_back(v);
-    }
-  }
-  strandfem::ProcessQueue queue(static_cast<int>(variants.size()));  // after rank 0 wrote the case files
-  for (const Variant& v : variants) strandfem::load_case(v.case_file);  // bad input stops the sweep before it runs
-  const std::string who = queue.processes() > 1 ? "sweep (process " + std::to_string(rank) + "): " : "sweep: ";
-  std::vector<int> exit_codes(variants.size(), std::numeric_limits<int>::min());
-  for (int i = queue.next(); i >= 0; i = queue.next()) {
-    const Variant& v = variants[i];
-    if (!quiet) std::cerr << who << v.name << "\n";
-    exit_codes[i] = run_case_file(v.case_file, (fs::path(output_dir) / v.name).string(), threads, true, false, false, false, 0);
-    if (!quiet) std::cerr << who << v.name << (exit_codes[i] == 0 ? " done" : " failed, exit code " + std::to_string(exit_codes[i])) << "\n";
-  }
-  exit_codes = queue.largest(exit_codes);
-  int result = 0;
-  for (std::size_t i = 0; i < variants.size(); ++i) {
-    variants[i].exit_code = exit_codes[i];
-    if (result == 0) result = exit_codes[i];
-  }
-  if (rank > 0) return result;
-  const std::string table = (fs::path(output_dir) / "sweep.csv").string();
-  std::ofstream csv(table);
-  csv << "variant,key,value,case_file,results,exit_code," << strandfem::sweep_result_header() << "\n";
-  for (const Variant& v : variants)
-    csv << v.name << "," << key << "," << v.value << "," << v.case_file << "," << v.name << "," << v.exit_code << ","
-        << strandfem::sweep_result_fields(read_summary(fs::path(output_dir) / v.name)) << "\n";
-  if (!csv) throw strandfem::OutputError("cannot write " + table);
-  csv.close();
-  strandfem_app::draw_figures("plot_sweep.py", output_dir);
-  if (!quiet) std::cerr << "sweep of " << variants.size() << " cases in " << output_dir << " (sweep.csv, sweep.png)\n";
-  return result;
+  return strandfem::sweep_exit_code(variants);
 }
 
 // OpenBLAS chooses its kernels once, when it loads: to use faster ones than it picked, the program restarts itself
@@ -364,8 +279,7 @@ int main(int argc, char** argv) {
       }
       return 0;
     }
-    if (sweep->parsed()) return run_sweep(sweep_cases, sweep_key, sweep_values, sweep_settings, output_dir, threads, quiet,
-                                            processes.rank());
+    if (sweep->parsed()) return run_sweep_command({sweep_cases, sweep_key, sweep_values, sweep_settings, output_dir}, threads, quiet);
     return run_case_file(case_path, output_dir, threads, quiet, verbose, plots, resume, stop_after, dump_tangent);
   } catch (const strandfem::CaseError& e) {
     std::cerr << "error: " << e.what() << "\n";

@@ -80,6 +80,12 @@ HistoryRow history_row(const CaseDefinition& c, const StaticAnalysis& analysis, 
   return row;
 }
 
+nlohmann::json read_summary(const std::filesystem::path& folder) {
+  std::ifstream in(folder / "summary.json");
+  nlohmann::json summary = nlohmann::json::parse(in, nullptr, false);
+  return summary.is_discarded() ? nlohmann::json::object() : summary;
+}
+
 bool is_result_file_name(std::string name) {
   const std::string partial = kPartialSuffix;
   if (name.size() > partial.size() && name.compare(name.size() - partial.size(), partial.size(), partial) == 0)

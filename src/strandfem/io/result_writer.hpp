@@ -33,6 +33,9 @@ struct HistoryRow {
 
 HistoryRow history_row(const CaseDefinition& c, const StaticAnalysis& analysis, const IncrementReport& report);
 
+// summary.json of a results folder; an empty object where there is none or it does not parse.
+nlohmann::json read_summary(const std::filesystem::path& folder);
+
 // True for the names of files a run writes (history.csv, summary.json, result_00012.vtu, their .tmp forms...):
 // the only files a new run removes from its folder.
 bool is_result_file_name(std::string name);

@@ -10,6 +10,16 @@
 
 namespace strandfem {
 
+int process_rank() {
+  int rank = 0;
+#ifdef STRANDFEM_MUMPS_MPI
+  int initialized = 0;
+  MPI_Initialized(&initialized);
+  if (initialized) MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+#endif
+  return rank;
+}
+
 ProcessQueue::ProcessQueue(int items) : items_(items) {
 #ifdef STRANDFEM_MUMPS_MPI
   int initialized = 0;

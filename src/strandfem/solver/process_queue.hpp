@@ -5,6 +5,9 @@
 
 namespace strandfem {
 
+// This process's rank in its mpiexec job (0 without MPI, or when MPI has not started).
+int process_rank();
+
 class ProcessQueue {
  public:
   // Collective over every process of the job when MPI runs: each must make its queue of the same items together.
