@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "program_runner.hpp"
@@ -117,6 +118,12 @@ TEST(Sweep, TwoProcessesShareTheVariantsAndGiveTheSerialNumbers) {
   EXPECT_NE(two.stderr_text.find("sweep (process 0): contact.friction="), std::string::npos) << two.stderr_text;
   EXPECT_NE(two.stderr_text.find("sweep (process 1): contact.friction="), std::string::npos) << two.stderr_text;
   EXPECT_TRUE(std::filesystem::exists(base / "two" / "sweep.png")) << two.stderr_text;
+  // Each variant ran alone in its process, its factorizations on one BLAS thread (read back from OpenBLAS).
+  for (const char* variant : {"contact.friction=0", "contact.friction=0.3", "contact.friction=5"}) {
+    const auto statistics = nlohmann::json::parse(std::ifstream(base / "two" / variant / "summary.json")).at("solver_statistics");
+    EXPECT_EQ(statistics.at("mumps_processes"), 1) << variant;
+    if (statistics.at("blas_kernels") != "not OpenBLAS") EXPECT_EQ(statistics.at("blas_threads"), 1) << variant;
+  }
   const auto one_process = read_csv(base / "serial" / "sweep.csv");
   const auto two_processes = read_csv(base / "two" / "sweep.csv");
   ASSERT_EQ(one_process.size(), 3u);

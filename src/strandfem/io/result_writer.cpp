@@ -172,6 +172,7 @@ nlohmann::json solver_statistics(const StaticAnalysis& analysis) {
           {"analysis_seconds", l.analysis_seconds},
           {"ordering", l.ordering},
           {"blas_kernels", blas_core_name()},
+          {"blas_threads", blas_thread_count()},
           {"mumps_build", mumps_build()},
           {"mumps_processes", mumps_process_count()},
           {"factor_entries", l.factor_entries},

@@ -13,6 +13,12 @@ std::string blas_core_name() {
   return name ? name : "unknown";
 }
 
+int blas_thread_count() {
+  using ThreadCount = int (*)();
+  const auto count = reinterpret_cast<ThreadCount>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+  return count ? count() : 0;
+}
+
 bool cpu_has_skylakex_instructions() {
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
   __builtin_cpu_init();

@@ -9,6 +9,9 @@ namespace strandfem {
 // when the BLAS in use is another one.
 std::string blas_core_name();
 
+// The threads OpenBLAS runs its kernels on, read back from the library; 0 when the BLAS is another one.
+int blas_thread_count();
+
 // True when the CPU has the AVX-512 subsets that OpenBLAS' SkylakeX kernels use (F, CD, BW, DQ, VL).
 bool cpu_has_skylakex_instructions();
 
