@@ -38,6 +38,7 @@ LOAD_POINT = "cases/studies/load_point/"
 SPRING = "contact.stabilization=1.0e-5"  # the contact spring the mu_a 0.9 runs need to unload (friction-studies.md)
 SLAVE_WIRE = "contact.friction_direction=slave_wire"
 TWO_CYCLES = "steps.1.cycles=2"
+BAND = "contact.normal_smoothing=1.0e-3"  # the onset band of the Fig. 19 grid and the two-cycle studies (friction-studies.md)
 
 
 def variant_folder_name(key, value):
@@ -134,33 +135,33 @@ JOBS = {j.name: j for j in [
     run_job("cardinal_maps", BENDING + "cardinal_maps.yaml", 759),  # performance.md, one thread beside another run
     # Section 5, first loops (one cycle): the sweeps of the cardinal_friction*.yaml headers.
     Job("fig15_mu_a", [BENDING + "cardinal_friction.yaml"], key="contact.friction", values=["0.5", "0.7", "0.9"],
-        wall_s=294 + 748 + 414),  # validation/default-settings.md
+        wall_s=1159 + 1131 + 7200),  # validation/default-settings.md, one thread beside other runs
     Job("fig17_zones", [BENDING + "cardinal_friction.yaml", BENDING + "cardinal_zones_07_03.yaml",
-                        BENDING + "cardinal_zones_09_01.yaml"], wall_s=294 + 645 + 512),  # the same
+                        BENDING + "cardinal_zones_09_01.yaml"]),  # the same; one of the three walls is not given
     Job("fig19a_strand_axis", [BENDING + "cardinal_friction.yaml"], key="contact.orthotropy_ratio",
-        values=["1", "5", "10", "15"], wall_s=178 + 234 + 336 + 279),  # validation/friction-studies.md
+        values=["1", "5", "10", "15"], sets=[BAND], wall_s=178 + 234 + 336 + 279),  # validation/friction-studies.md
     Job("fig19b_strand_axis", [BENDING + "cardinal_friction_mu07.yaml"], key="contact.orthotropy_ratio",
-        values=["1", "5", "10", "15"], wall_s=257 + 284 + 261 + 365),  # the same
+        values=["1", "5", "10", "15"], sets=[BAND], wall_s=257 + 284 + 261 + 365),  # the same
     Job("fig19c_strand_axis", [BENDING + "cardinal_friction_mu09.yaml"], key="contact.orthotropy_ratio",
-        values=["1", "5", "10", "15"], wall_s=241 + 262 + 323 + 396),  # the same
+        values=["1", "5", "10", "15"], sets=[BAND], wall_s=241 + 262 + 323 + 396),  # the same
     Job("fig19a_slave_wire", [BENDING + "cardinal_friction.yaml"], key="contact.orthotropy_ratio",
-        values=["1", "5", "10", "15"], sets=[SLAVE_WIRE], wall_s=215 + 304 + 381 + 498),  # the same
+        values=["1", "5", "10", "15"], sets=[SLAVE_WIRE, BAND], wall_s=215 + 304 + 381 + 498),  # the same
     Job("fig19b_slave_wire", [BENDING + "cardinal_friction_mu07.yaml"], key="contact.orthotropy_ratio",
-        values=["1", "5", "10", "15"], sets=[SLAVE_WIRE], wall_s=269 + 325 + 540 + 1025),  # the same
+        values=["1", "5", "10", "15"], sets=[SLAVE_WIRE, BAND], wall_s=269 + 325 + 540 + 1025),  # the same
     Job("fig19c_slave_wire", [BENDING + "cardinal_friction_mu09.yaml"], key="contact.orthotropy_ratio",
-        values=["1", "5", "10", "15"], sets=[SLAVE_WIRE, SPRING], wall_s=328 + 446 + 896 + 1992),  # the same
+        values=["1", "5", "10", "15"], sets=[SLAVE_WIRE, SPRING, BAND], wall_s=328 + 446 + 896 + 1992),  # the same
     # Section 5, two cycles: validation/friction-studies.md, "The return loops".
-    Job("mu05_two_cycles", [BENDING + "cardinal_friction.yaml"], sets=[TWO_CYCLES], wall_s=401),
-    Job("mu07_two_cycles", [BENDING + "cardinal_friction_mu07.yaml"], sets=[TWO_CYCLES], wall_s=479),
-    Job("mu09_two_cycles", [BENDING + "cardinal_friction_mu09.yaml"], sets=[TWO_CYCLES, SPRING], wall_s=545),
+    Job("mu05_two_cycles", [BENDING + "cardinal_friction.yaml"], sets=[TWO_CYCLES, BAND], wall_s=401),
+    Job("mu07_two_cycles", [BENDING + "cardinal_friction_mu07.yaml"], sets=[TWO_CYCLES, BAND], wall_s=479),
+    Job("mu09_two_cycles", [BENDING + "cardinal_friction_mu09.yaml"], sets=[TWO_CYCLES, SPRING, BAND], wall_s=545),
     Job("zones_two_cycles", [BENDING + "cardinal_zones_07_03.yaml", BENDING + "cardinal_zones_09_01.yaml"],
-        sets=[TWO_CYCLES], wall_s=395 + 451),
+        sets=[TWO_CYCLES, BAND], wall_s=395 + 451),
     Job("mu05_slave_wire_two_cycles", [BENDING + "cardinal_friction.yaml"], key="contact.orthotropy_ratio",
-        values=["5", "15"], sets=[SLAVE_WIRE, TWO_CYCLES], wall_s=578 + 979),
+        values=["5", "15"], sets=[SLAVE_WIRE, TWO_CYCLES, BAND], wall_s=578 + 979),
     Job("mu07_slave_wire_two_cycles", [BENDING + "cardinal_friction_mu07.yaml"], key="contact.orthotropy_ratio",
-        values=["5"], sets=[SLAVE_WIRE, TWO_CYCLES], wall_s=624),
+        values=["5"], sets=[SLAVE_WIRE, TWO_CYCLES, BAND], wall_s=624),
     Job("mu09_slave_wire_two_cycles", [BENDING + "cardinal_friction_mu09.yaml"], key="contact.orthotropy_ratio",
-        values=["5"], sets=[SLAVE_WIRE, TWO_CYCLES, SPRING], wall_s=826),
+        values=["5"], sets=[SLAVE_WIRE, TWO_CYCLES, SPRING, BAND], wall_s=826),
     # The curve from the load point (validation/bending.md): no walls given.
 ] + [run_job("load_point/" + name, LOAD_POINT + name + ".yaml") for name in (
     "s32_case1_core", "s32_case1_section", "s32_case1_saddle45", "s32_case1_saddle90", "s32_case1_saddle150",
