@@ -165,6 +165,7 @@ JOBS = {j.name: j for j in [
     # The curve from the load point (validation/bending.md): no walls given.
 ] + [run_job("load_point/" + name, LOAD_POINT + name + ".yaml") for name in (
     "s32_case1_core", "s32_case1_section", "s32_case1_saddle45", "s32_case1_saddle90", "s32_case1_saddle150",
+    "s32_case2_core", "s32_case2_saddle150", "s32_case3_core", "s32_case3_saddle90",
     "s32_case4_core", "s32_case4_saddle90", "s32_case4_saddle150",
     "cardinal_core", "cardinal_saddle90", "cardinal_saddle150")]}
 

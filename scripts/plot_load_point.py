@@ -2,7 +2,7 @@
 """Plots the curve from the load point at Vmax (paper Figs. 8, 9a, 15a) for V on the core node, through a rigid
 section and through saddles: docs/validation_bending_from_load_point.png.
 
-Each panel is one strand and load case (S32 cases 1 and 4, Cardinal with mu_a 0.5): the rise below the load point
+Each panel is one strand and load case (S32 cases 1 to 4, Cardinal with mu_a 0.5): the rise below the load point
 over 150 mm from it, the mean of both sides, read from the core's nodes in each run's displacements.csv (the state
 at Vmax: the cases of cases/studies/load_point/ end at the peak), beside eq. 3.2 for EImax and EImin and the top
 of the paper's chart.
@@ -34,6 +34,10 @@ PANELS = (
      (("s32_case1_core", "V on the core node"), ("s32_case1_section", "rigid section"),
       ("s32_case1_saddle45", "saddle 45 mm"), ("s32_case1_saddle90", "saddle 90 mm"),
       ("s32_case1_saddle150", "saddle 150 mm"))),
+    ("S32 case 2: T 80 kN, V 10 kN", 10000.0, 80000.0, 6357.8e6, 82.7e6, 4.0,
+     (("s32_case2_core", "V on the core node"), ("s32_case2_saddle150", "saddle 150 mm"))),
+    ("S32 case 3: T 140 kN, V 20 kN", 20000.0, 140000.0, 6357.8e6, 82.7e6, 8.0,
+     (("s32_case3_core", "V on the core node"), ("s32_case3_saddle90", "saddle 90 mm"))),
     ("S32 case 4: T 280 kN, V 40 kN", 40000.0, 280000.0, 6357.8e6, 82.7e6, 4.0,
      (("s32_case4_core", "V on the core node"), ("s32_case4_saddle90", "saddle 90 mm"),
       ("s32_case4_saddle150", "saddle 150 mm"))),
@@ -81,7 +85,9 @@ def main():
     parser.add_argument("runs", help="folder holding one results folder per case of cases/studies/load_point/")
     parser.add_argument("-o", "--output", default=os.path.join(ROOT, "docs", "validation_bending_from_load_point.png"))
     args = parser.parse_args()
-    fig, axes = plt.subplots(1, len(PANELS), figsize=(15, 4.6))
+    fig, grid = plt.subplots(2, 3, figsize=(15, 9))
+    axes = grid.flat
+    grid.flat[-1].axis("off")
     smooth = [float(d) for d in range(int(SPAN) + 1)]
     sampled = [5.0 * i for i in range(int(SPAN / 5) + 1)]
     for ax, (title, V, T, ei_max, ei_min, chart, runs) in zip(axes, PANELS):
