@@ -461,6 +461,42 @@ TEST(ContactSet, AugmentationTakesTheStickElasticSlipIntoItsOffset) {
   EXPECT_TRUE(p.stick_offset.isZero());
 }
 
+// The augmented stick acts on the points that carry load: of two crossings on the straight wire, one pressed
+// 0.05 mm deep and one 0.002 mm (a 25th of its normal force), both slid by a fifth of their elastic slip, only the
+// first takes its elastic slip into an offset; the lightly pressed one keeps the penalty stick.
+TEST(ContactSet, AugmentationLeavesLightlyPressedPointsOnThePenaltyStick) {
+  Mesh mesh = v_wire_mesh(0.0);
+  mesh.add_line("pressed", 2, 0, 0, 2, [](double t) { return std::make_pair(Vec3(-1.95, 20.0 * t - 10.0, 5.0), Mat3::Identity()); });
+  mesh.add_line("touching", 2, 1, 0, 2, [](double t) { return std::make_pair(Vec3(-1.998, 20.0 * t - 10.0, 15.0), Mat3::Identity()); });
+  ContactSettings settings = enabled_contact();
+  settings.friction = 0.3;
+  settings.initial_overlap = InitialOverlap::kKeep;
+  settings.stick_augmentations = 3;
+  ContactSet contacts;
+  contacts.initialize(mesh, settings);
+  ASSERT_EQ(contacts.radial_point_count(), 2);
+  std::vector<NodeState> state = reference_state(mesh);
+  contacts.commit(mesh, state);
+  contacts.begin_increment(true);
+  const double s = contacts.points()[0].allowed_slip;
+  ASSERT_GT(s, 0.0);
+  for (std::size_t n = 0; n < state.size(); ++n)
+    if (mesh.nodes[n].wire > 0) state[n].position.z() += 0.2 * s;
+  contacts.evaluate(mesh, state, false);
+  std::array<std::size_t, 2> index{};  // pressed, touching
+  for (std::size_t i = 0; i < contacts.points().size(); ++i) {
+    const ContactPoint& p = contacts.points()[i];
+    if (p.kind == ContactKind::kPoint) index[std::max(p.wire_a, p.wire_b) == 1 ? 0 : 1] = i;
+  }
+  const ContactResponse &pressed = contacts.responses()[index[0]], &touching = contacts.responses()[index[1]];
+  ASSERT_EQ(pressed.status, ContactStatus::kStick);
+  ASSERT_EQ(touching.status, ContactStatus::kStick);
+  EXPECT_NEAR(touching.normal_force / pressed.normal_force, 0.04, 0.002);
+  EXPECT_EQ(contacts.augment_stick(), 1);
+  EXPECT_FALSE(contacts.points()[index[0]].stick_offset.isZero());
+  EXPECT_TRUE(contacts.points()[index[1]].stick_offset.isZero());
+}
+
 // Step control: a correction that closes a point its starting iterate had open (or within the smoothing band)
 // deeper than kDeepClosing closing depths is cut to where that point just reaches one closing depth, the gap taken
 // as linear in the fraction; points already in the penalty regime, and shallow closings, leave it whole.

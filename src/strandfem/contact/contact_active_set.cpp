@@ -1,6 +1,7 @@
 // ContactSet's Newton support: the active set of closed points and the held stick/slip states of an
 // increment (docs/theory.md, "Newton with contact").
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -17,7 +18,20 @@ constexpr double kMaxAugmentationRatio = 0.9;  // an augmentation round extrapol
 // Releases + re-closings per point and increment; then an active point stays active (a point that keeps
 // opening and closing carries next to no force, and holding it closed stops the chatter).
 constexpr int kMaxNormalSwitches = 4;              // held friction switches per point and increment
+// The augmented stick leaves points carrying less than this share of the largest normal force of their kind on the
+// penalty stick: on cones that small a rigid stick turns thousands of lightly pressed points between stick and slip
+// at every round (docs/theory.md, "Augmented stick").
+constexpr double kAugmentedStickLoadFraction = 0.1;
 }  // namespace
+
+std::array<double, 2> ContactSet::largest_normal_forces() const {
+  std::array<double, 2> largest{0, 0};  // point, line
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    double& l = largest[points_[i].kind == ContactKind::kLine];
+    l = std::max(l, std::abs(responses_[i].normal_force));
+  }
+  return largest;
+}
 
 void ContactSet::begin_increment(bool loading_continues) {
   augmentation_rounds_ = 0;
@@ -61,11 +75,7 @@ void ContactSet::activate_closed() {
 int ContactSet::release_tensile() {
   // Tolerances relative to the largest contact force of each kind: a tension of 1e-12 N/mm is zero, and
   // releasing it only makes the point chatter about g = 0.
-  double largest[2] = {0, 0};
-  for (std::size_t i = 0; i < points_.size(); ++i) {
-    double& l = largest[points_[i].kind == ContactKind::kLine];
-    l = std::max(l, std::abs(responses_[i].normal_force));
-  }
+  const std::array<double, 2> largest = largest_normal_forces();
   int changed = 0;
   for (std::size_t i = 0; i < points_.size(); ++i) {
     ContactPoint& p = points_[i];
@@ -113,10 +123,13 @@ int ContactSet::release_tensile() {
 int ContactSet::augment_stick() {
   if (augmentation_rounds_ >= settings_.stick_augmentations) return 0;
   std::vector<std::pair<std::size_t, Vec3>> updates;  // point, its elastic slip on the contact plane
+  const std::array<double, 2> largest = largest_normal_forces();
   for (std::size_t i = 0; i < points_.size(); ++i) {
     const ContactPoint& p = points_[i];
     const ContactResponse& r = responses_[i];
-    if (!frictional(p) || r.status != ContactStatus::kStick || !(r.normal_force > 0) || !(p.allowed_slip > 0)) continue;
+    if (!frictional(p) || r.status != ContactStatus::kStick || !(p.allowed_slip > 0) ||
+        !(r.normal_force > kAugmentedStickLoadFraction * largest[p.kind == ContactKind::kLine]))
+      continue;
     const Vec3 elastic_slip = r.tangential_gap + (p.stick_offset - r.normal.dot(p.stick_offset) * r.normal);
     if (elastic_slip.norm() > settings_.stick_tolerance * p.allowed_slip) updates.emplace_back(i, elastic_slip);
   }

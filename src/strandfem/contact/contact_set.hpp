@@ -67,6 +67,8 @@ class ContactSet final : public Interaction {
   void save_state(ArchiveWriter& out) const override;
   void restore_state(ArchiveReader& in, const Mesh& mesh, const std::vector<NodeState>& state) override;
   int release_tensile();
+  // The largest |normal force| over the points of each kind at the last evaluation: [point, line].
+  std::array<double, 2> largest_normal_forces() const;
   // Augmented stick (ContactSettings::stick_augmentations): every sticking point whose stick points have moved
   // apart by more than the tolerance takes that elastic slip into its stick offset (the force it carries there
   // doubles its penalty part, and Newton goes on). Returns how many points changed; 0 once the rounds are spent.
