@@ -412,17 +412,22 @@ TEST(ContactSet, StabilizationResistsOnlyTheSlideWithinAnIncrement) {
   EXPECT_NEAR(across_is_slave * second.stabilization.z(), -k * 0.1, 1e-9 * k);
 }
 
+// Friction 0.3 with three augmentation rounds; the reference overlaps are kept, so pressed wires carry force at once.
+ContactSettings augmented_friction() {
+  ContactSettings settings = enabled_contact();
+  settings.friction = 0.3;
+  settings.initial_overlap = InitialOverlap::kKeep;
+  settings.stick_augmentations = 3;
+  return settings;
+}
+
 // Augmented stick: a round takes a sticking point's elastic slip into its offset, so that at the same state the
 // stick force doubles and, with the stick points back together, the force stays (Uzawa's update); a point within
 // the tolerance is left alone, and the offset never leaves the cone.
 TEST(ContactSet, AugmentationTakesTheStickElasticSlipIntoItsOffset) {
   const Mesh mesh = pressed_crossing_mesh();
-  ContactSettings settings = enabled_contact();
-  settings.friction = 0.3;
-  settings.initial_overlap = InitialOverlap::kKeep;
-  settings.stick_augmentations = 3;
   ContactSet contacts;
-  contacts.initialize(mesh, settings);
+  contacts.initialize(mesh, augmented_friction());
   const std::size_t crossing = crossing_index(contacts);
   std::vector<NodeState> state = reference_state(mesh);
   contacts.commit(mesh, state);
@@ -468,12 +473,8 @@ TEST(ContactSet, AugmentationLeavesLightlyPressedPointsOnThePenaltyStick) {
   Mesh mesh = v_wire_mesh(0.0);
   mesh.add_line("pressed", 2, 0, 0, 2, [](double t) { return std::make_pair(Vec3(-1.95, 20.0 * t - 10.0, 5.0), Mat3::Identity()); });
   mesh.add_line("touching", 2, 1, 0, 2, [](double t) { return std::make_pair(Vec3(-1.998, 20.0 * t - 10.0, 15.0), Mat3::Identity()); });
-  ContactSettings settings = enabled_contact();
-  settings.friction = 0.3;
-  settings.initial_overlap = InitialOverlap::kKeep;
-  settings.stick_augmentations = 3;
   ContactSet contacts;
-  contacts.initialize(mesh, settings);
+  contacts.initialize(mesh, augmented_friction());
   ASSERT_EQ(contacts.radial_point_count(), 2);
   std::vector<NodeState> state = reference_state(mesh);
   contacts.commit(mesh, state);
