@@ -69,8 +69,9 @@ class ContactSet final : public Interaction {
   int release_tensile();
   // The largest |normal force| over the points of each kind at the last evaluation: [point, line].
   std::array<double, 2> largest_normal_forces() const;
-  // Augmented stick (ContactSettings::stick_augmentations): every sticking point whose stick points have moved
-  // apart by more than the tolerance takes that elastic slip into its stick offset (the force it carries there
+  // Augmented stick (ContactSettings::stick_augmentations): every sticking point that carries a tenth of the largest
+  // normal force of its kind or more, and whose stick points have moved apart by more than the tolerance, takes that
+  // elastic slip into its stick offset (the force it carries there
   // doubles its penalty part, and Newton goes on). Returns how many points changed; 0 once the rounds are spent.
   int augment_stick();
   int augmentation_rounds() const { return augmentation_rounds_; }
