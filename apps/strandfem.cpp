@@ -240,7 +240,7 @@ int main(int argc, char** argv) {
   run->add_option("case", case_path, "Case file (YAML)")->required();
   run->add_option("-o,--output", output_dir, "Results folder (created if needed)");
   run->add_option("-t,--threads", threads, "OpenMP threads for element evaluation (0: default)")->check(CLI::NonNegativeNumber);
-  run->add_flag("-q,--quiet", quiet, "No progress lines");
+  run->add_flag("-q,--quiet", quiet, "No progress lines and no end-of-run report");
   run->add_flag("-v,--verbose", verbose, "A progress line per Newton iteration");
   run->add_flag("--resume", resume, "Continue the run in the results folder from its last converged increment (its checkpoint.bin)");
   run->add_option("--stop-after", stop_after,
