@@ -466,16 +466,21 @@ TEST(ContactSet, AugmentationTakesTheStickElasticSlipIntoItsOffset) {
   EXPECT_TRUE(p.stick_offset.isZero());
 }
 
-// The augmented stick acts on the points that carry load: of two crossings on the straight wire, one pressed
-// 0.05 mm deep and one 0.002 mm (a 25th of its normal force), both slid by a fifth of their elastic slip, only the
-// first takes its elastic slip into an offset; the lightly pressed one keeps the penalty stick.
-TEST(ContactSet, AugmentationLeavesLightlyPressedPointsOnThePenaltyStick) {
+// The augmented stick acts on every crossing and on the line contacts that carry load: a straight wire crossed by
+// two wires and touched along its length by two of its own layer, one of each kind pressed 0.05 mm deep and one
+// 0.002 mm (a 25th of its normal force), all slid by a fifth of their elastic slip. Both crossings and the pressed
+// line contact take their elastic slip into an offset; the lightly pressed line contact keeps the penalty stick.
+TEST(ContactSet, AugmentationLeavesLightlyPressedLineContactsOnThePenaltyStick) {
   Mesh mesh = v_wire_mesh(0.0);
-  mesh.add_line("pressed", 2, 0, 0, 2, [](double t) { return std::make_pair(Vec3(-1.95, 20.0 * t - 10.0, 5.0), Mat3::Identity()); });
-  mesh.add_line("touching", 2, 1, 0, 2, [](double t) { return std::make_pair(Vec3(-1.998, 20.0 * t - 10.0, 15.0), Mat3::Identity()); });
+  mesh.add_line("pressed crossing", 2, 0, 0, 2, [](double t) { return std::make_pair(Vec3(-1.95, 20.0 * t - 10.0, 5.0), Mat3::Identity()); });
+  mesh.add_line("touching crossing", 2, 1, 0, 2, [](double t) { return std::make_pair(Vec3(-1.998, 20.0 * t - 10.0, 15.0), Mat3::Identity()); });
+  auto beside = [](double distance, double side) {  // a wire of the straight wire's layer, at 60 degrees on one side
+    return [distance, side](double t) { return std::make_pair(Vec3(0.5 * distance, side * 0.866025 * distance, 20.0 * t), Mat3::Identity()); };
+  };
+  mesh.add_line("pressed neighbour", 1, 1, 0, 2, beside(1.95, 1.0));
+  mesh.add_line("touching neighbour", 1, 2, 0, 2, beside(1.998, -1.0));
   ContactSet contacts;
   contacts.initialize(mesh, augmented_friction());
-  ASSERT_EQ(contacts.radial_point_count(), 2);
   std::vector<NodeState> state = reference_state(mesh);
   contacts.commit(mesh, state);
   contacts.begin_increment(true);
@@ -484,18 +489,30 @@ TEST(ContactSet, AugmentationLeavesLightlyPressedPointsOnThePenaltyStick) {
   for (std::size_t n = 0; n < state.size(); ++n)
     if (mesh.nodes[n].wire > 0) state[n].position.z() += 0.2 * s;
   contacts.evaluate(mesh, state, false);
-  std::array<std::size_t, 2> index{};  // pressed, touching
+  std::array<double, 5> force{};  // largest normal force on each wire's points (wire 0: none)
+  std::array<ContactKind, 5> kind{};
   for (std::size_t i = 0; i < contacts.points().size(); ++i) {
     const ContactPoint& p = contacts.points()[i];
-    if (p.kind == ContactKind::kPoint) index[std::max(p.wire_a, p.wire_b) == 1 ? 0 : 1] = i;
+    const ContactResponse& r = contacts.responses()[i];
+    if (r.status == ContactStatus::kOpen) continue;
+    ASSERT_EQ(std::min(p.wire_a, p.wire_b), 0);
+    ASSERT_EQ(r.status, ContactStatus::kStick);
+    const int wire = std::max(p.wire_a, p.wire_b);
+    force[wire] = std::max(force[wire], r.normal_force);
+    kind[wire] = p.kind;
   }
-  const ContactResponse &pressed = contacts.responses()[index[0]], &touching = contacts.responses()[index[1]];
-  ASSERT_EQ(pressed.status, ContactStatus::kStick);
-  ASSERT_EQ(touching.status, ContactStatus::kStick);
-  EXPECT_NEAR(touching.normal_force / pressed.normal_force, 0.04, 0.002);
-  EXPECT_EQ(contacts.augment_stick(), 1);
-  EXPECT_FALSE(contacts.points()[index[0]].stick_offset.isZero());
-  EXPECT_TRUE(contacts.points()[index[1]].stick_offset.isZero());
+  EXPECT_EQ(kind[1], ContactKind::kPoint);
+  EXPECT_EQ(kind[2], ContactKind::kPoint);
+  EXPECT_EQ(kind[3], ContactKind::kLine);
+  EXPECT_EQ(kind[4], ContactKind::kLine);
+  EXPECT_NEAR(force[2] / force[1], 0.04, 0.002);
+  EXPECT_NEAR(force[4] / force[3], 0.04, 0.002);
+  EXPECT_GT(contacts.augment_stick(), 2);
+  for (std::size_t i = 0; i < contacts.points().size(); ++i) {
+    const ContactPoint& p = contacts.points()[i];
+    if (contacts.responses()[i].status == ContactStatus::kOpen) continue;
+    EXPECT_EQ(p.stick_offset.isZero(), std::max(p.wire_a, p.wire_b) == 4) << "point between wires " << p.wire_a << " and " << p.wire_b;
+  }
 }
 
 // Step control: a correction that closes a point its starting iterate had open (or within the smoothing band)

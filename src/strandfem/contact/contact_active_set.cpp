@@ -18,10 +18,10 @@ constexpr double kMaxAugmentationRatio = 0.9;  // an augmentation round extrapol
 // Releases + re-closings per point and increment; then an active point stays active (a point that keeps
 // opening and closing carries next to no force, and holding it closed stops the chatter).
 constexpr int kMaxNormalSwitches = 4;              // held friction switches per point and increment
-// The augmented stick leaves points carrying less than this share of the largest normal force of their kind on the
-// penalty stick: on cones that small a rigid stick turns thousands of lightly pressed points between stick and slip
-// at every round (docs/theory.md, "Augmented stick").
-constexpr double kAugmentedStickLoadFraction = 0.1;
+// The augmented stick leaves line contacts carrying less than this share of the largest line load on the penalty
+// stick: on cones that small a rigid stick turns thousands of lateral points between stick and slip at every round
+// (docs/theory.md, "Augmented stick").
+constexpr double kAugmentedLineLoadFraction = 0.1;
 }  // namespace
 
 std::array<double, 2> ContactSet::largest_normal_forces() const {
@@ -123,12 +123,12 @@ int ContactSet::release_tensile() {
 int ContactSet::augment_stick() {
   if (augmentation_rounds_ >= settings_.stick_augmentations) return 0;
   std::vector<std::pair<std::size_t, Vec3>> updates;  // point, its elastic slip on the contact plane
-  const std::array<double, 2> largest = largest_normal_forces();
+  const double largest_line_load = largest_normal_forces()[1];
   for (std::size_t i = 0; i < points_.size(); ++i) {
     const ContactPoint& p = points_[i];
     const ContactResponse& r = responses_[i];
     if (!frictional(p) || r.status != ContactStatus::kStick || !(p.allowed_slip > 0) ||
-        !(r.normal_force > kAugmentedStickLoadFraction * largest[p.kind == ContactKind::kLine]))
+        (p.kind == ContactKind::kLine && !(r.normal_force > kAugmentedLineLoadFraction * largest_line_load)))
       continue;
     const Vec3 elastic_slip = r.tangential_gap + (p.stick_offset - r.normal.dot(p.stick_offset) * r.normal);
     if (elastic_slip.norm() > settings_.stick_tolerance * p.allowed_slip) updates.emplace_back(i, elastic_slip);
