@@ -70,6 +70,21 @@ TEST(IncrementController, HardIncrementsDoNotRegrow) {
   EXPECT_NEAR(control.sizes().fraction, 0.375, 1e-15);
 }
 
+// An increment's size is judged by the corrections before the stick's augmentation rounds, which cost about the
+// same at any size: an increment that converged easily and then spent its rounds counts as easy, unless a round was
+// abandoned.
+TEST(IncrementReport, SizeIsJudgedByTheCorrectionsBeforeTheAugmentationRounds) {
+  IncrementReport plain;
+  plain.corrections = kHard;
+  EXPECT_EQ(plain.size_corrections(), kHard);
+  IncrementReport augmented;
+  augmented.corrections = 3 * kHard;
+  augmented.corrections_before_rounds = kEasy;
+  EXPECT_EQ(augmented.size_corrections(), kEasy);
+  augmented.kept_converged_round = true;
+  EXPECT_EQ(augmented.size_corrections(), 3 * kHard);
+}
+
 TEST(IncrementController, ExtrapolatedFailureIsRetriedPlainOnceAndThenNotExtrapolatedInTheStep) {
   IncrementController control;
   control.begin_step(4, 0.1);  // a previous step that loaded the same way

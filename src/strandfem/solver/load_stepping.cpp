@@ -154,7 +154,7 @@ AnalysisStatus StaticAnalysis::run(const std::function<void(const IncrementRepor
         previous_committed_state_ = committed_state_;
         committed_state_ = state_;
         committed_motion_ = applied_motion_;
-        control.converged(report.corrections);
+        control.converged(report.size_corrections());
         if (control.step_done()) end_step(ramps);
         // Last: the callback may save a checkpoint, which must hold the progress as it now stands.
         if (on_increment) on_increment(report);

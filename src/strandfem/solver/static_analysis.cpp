@@ -341,6 +341,7 @@ bool StaticAnalysis::solve_increment(const IncrementAttempt& attempt, const std:
       if (report.state_changes == 0) {
         report.augmented_points = augment_at_convergence();
         if (report.augmented_points == 0) return true;
+        if (report.corrections_before_rounds < 0) report.corrections_before_rounds = report.corrections;
         converged_round = state_;  // a round changes the interactions' values, not the nodes
         augmented = true;
       }

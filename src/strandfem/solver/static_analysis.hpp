@@ -47,6 +47,10 @@ struct IncrementReport {
   int augmented_points = 0;
   AttemptFailure failure = AttemptFailure::kNone;  // why the attempt gave up (reported once, then the controller acts)
   bool kept_converged_round = false;  // it gave up after a stick augmentation round: the increment keeps the round before
+  int corrections_before_rounds = -1;  // Newton corrections before the first stick augmentation round; -1: none ran
+  // The corrections the increment's size cost: those before its first augmentation round, since the rounds cost
+  // about the same at any size; all of them without a round, or when a round was abandoned.
+  int size_corrections() const { return corrections_before_rounds >= 0 && !kept_converged_round ? corrections_before_rounds : corrections; }
 };
 
 // What the solver did: counts and wall time per phase (the linear solver's own figures are in
