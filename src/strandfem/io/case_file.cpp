@@ -2,6 +2,7 @@
 
 #include "strandfem/io/case_keys.hpp"
 #include "strandfem/io/contact_keys.hpp"
+#include "strandfem/io/resolved_configuration.hpp"
 #include "strandfem/io/load_keys.hpp"
 #include "strandfem/io/solver_keys.hpp"
 #include "strandfem/io/yaml_document.hpp"
@@ -420,6 +421,7 @@ CaseDefinition parse_case(const YAML::Node& root, const std::string& path) {
   c.resolved["case"] = yaml_text.str();
   c.resolved["solver"] = resolved_solver_options(c.model.options);
   c.resolved["contact"] = resolved_contact_settings(c.model.contact_settings);
+  add_resolved_model(c, c.resolved);
   return c;
 }
 }  // namespace

@@ -1,0 +1,73 @@
+#include "strandfem/io/resolved_configuration.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "strandfem/geometry/strand.hpp"
+
+namespace strandfem {
+
+namespace {
+constexpr double kDegree = std::numbers::pi / 180.0;
+
+nlohmann::json resolved_strand(const CaseDefinition& c) {
+  const StrandSpec& strand = *c.strand;
+  nlohmann::json layers = nlohmann::json::array();
+  for (std::size_t i = 0; i < strand.layers.size(); ++i) {
+    const LayerSpec& l = strand.layers[i];
+    const double radius = layer_radius(strand, static_cast<int>(i));
+    nlohmann::json layer = {{"wires", l.wires},
+                            {"diameter", l.wire_diameter},
+                            {"material", l.material},
+                            {"lay_angle", l.lay_angle / kDegree},
+                            {"lay_direction", i == 0 ? "none" : l.lay_direction > 0 ? "right" : "left"},
+                            {"start_angle", l.start_angle / kDegree},
+                            {"layer_radius_mm", radius}};
+    // Lay length: one turn of the helix along the strand, 2 pi R / tan(alpha).
+    layer["lay_length_mm"] = i == 0 || !(l.lay_angle > 0) ? nlohmann::json(nullptr) : nlohmann::json(2 * std::numbers::pi * radius / std::tan(l.lay_angle));
+    if (!l.wire_start_angles.empty()) {
+      nlohmann::json angles = nlohmann::json::array();
+      for (double a : l.wire_start_angles) angles.push_back(a / kDegree);
+      layer["wire_start_angles"] = angles;
+    }
+    layers.push_back(layer);
+  }
+  return {{"length", strand.length}, {"ends", c.end_type}, {"clamp_length", c.clamp_length}, {"layers", layers}};
+}
+
+nlohmann::json resolved_materials(const StrandSpec& strand) {
+  nlohmann::json materials = nlohmann::json::object();
+  for (const auto& [name, m] : strand.materials) {
+    nlohmann::json j = {{"E", m.youngs_modulus}, {"nu", m.poisson_ratio}, {"density", m.density}, {"plasticity", nullptr}};
+    if (m.plasticity)
+      j["plasticity"] = {{"yield_stress", m.plasticity->yield_stress},
+                         {"tangent_modulus", m.plasticity->tangent_modulus},
+                         {"stress_measure", m.plasticity->stress_measure == StressMeasure::engineering ? "engineering" : "true_stress"}};
+    materials[name] = j;
+  }
+  return materials;
+}
+}  // namespace
+
+void add_resolved_model(const CaseDefinition& c, nlohmann::json& resolved) {
+  if (c.strand) {
+    resolved["strand"] = resolved_strand(c);
+    resolved["materials"] = resolved_materials(*c.strand);
+  }
+  resolved["mesh"] = {{"element_length", c.mesh_spec.elements_per_wire > 0 ? nlohmann::json(nullptr) : nlohmann::json(c.mesh_spec.element_length)},
+                      {"elements_per_wire", c.mesh_spec.elements_per_wire > 0 ? nlohmann::json(c.mesh_spec.elements_per_wire) : nlohmann::json(nullptr)}};
+  nlohmann::json steps = nlohmann::json::array();
+  for (const LoadStep& s : c.model.steps) steps.push_back({{"name", s.name}, {"increments", s.increments}, {"cycles", s.cycles}});
+  resolved["steps"] = steps;
+  const OutputOptions& o = c.output;
+  resolved["output"] = {{"every", o.every},
+                        {"vtu", o.vtu},
+                        {"contacts", o.contacts},
+                        {"contacts_every", o.contacts_every},
+                        {"wires", o.wires},
+                        {"checkpoint", o.checkpoint},
+                        {"clamp_edge_offset", o.clamp_edge_offset},
+                        {"steady_tolerance", o.steady_tolerance}};
+}
+
+}  // namespace strandfem
