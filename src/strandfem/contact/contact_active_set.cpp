@@ -127,7 +127,7 @@ int ContactSet::augment_stick() {
   for (std::size_t i = 0; i < points_.size(); ++i) {
     const ContactPoint& p = points_[i];
     const ContactResponse& r = responses_[i];
-    if (!frictional(p) || r.status != ContactStatus::kStick || !(p.allowed_slip > 0) ||
+    if (!frictional(p) || r.status != ContactStatus::kStick || !(p.allowed_slip > 0) || !(r.normal_force > 0) ||
         (p.kind == ContactKind::kLine && !(r.normal_force > kAugmentedLineLoadFraction * largest_line_load)))
       continue;
     const Vec3 elastic_slip = r.tangential_gap + (p.stick_offset - r.normal.dot(p.stick_offset) * r.normal);

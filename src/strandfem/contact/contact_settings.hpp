@@ -79,6 +79,7 @@ struct ContactSettings {
   // over its elastic slip and Newton goes on, until no sticking point has slipped elastically by more than
   // stick_tolerance x its allowed slip or stick_augmentations rounds are spent. The stick then tends to Coulomb's
   // (no relative motion) while the penalty, and with it Newton's conditioning, stays; 0: the penalty stick alone.
+  // The analysis also ends the rounds once one barely moves the nodes and the loads.
   int stick_augmentations = 0;
   double stick_tolerance = 0.05;
   // Friction: default coefficient, then material pairs, then axial zones (highest priority).
