@@ -1,9 +1,6 @@
 #include "strandfem/io/resolved_configuration.hpp"
 
-#include <cmath>
 #include <numbers>
-
-#include "strandfem/geometry/strand.hpp"
 
 namespace strandfem {
 
@@ -15,16 +12,12 @@ nlohmann::json resolved_strand(const CaseDefinition& c) {
   nlohmann::json layers = nlohmann::json::array();
   for (std::size_t i = 0; i < strand.layers.size(); ++i) {
     const LayerSpec& l = strand.layers[i];
-    const double radius = layer_radius(strand, static_cast<int>(i));
     nlohmann::json layer = {{"wires", l.wires},
                             {"diameter", l.wire_diameter},
                             {"material", l.material},
                             {"lay_angle", l.lay_angle / kDegree},
                             {"lay_direction", i == 0 ? "none" : l.lay_direction > 0 ? "right" : "left"},
-                            {"start_angle", l.start_angle / kDegree},
-                            {"layer_radius_mm", radius}};
-    // Lay length: one turn of the helix along the strand, 2 pi R / tan(alpha).
-    layer["lay_length_mm"] = i == 0 || !(l.lay_angle > 0) ? nlohmann::json(nullptr) : nlohmann::json(2 * std::numbers::pi * radius / std::tan(l.lay_angle));
+                            {"start_angle", l.start_angle / kDegree}};
     if (!l.wire_start_angles.empty()) {
       nlohmann::json angles = nlohmann::json::array();
       for (double a : l.wire_start_angles) angles.push_back(a / kDegree);
