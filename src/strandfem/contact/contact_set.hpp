@@ -69,8 +69,8 @@ class ContactSet final : public Interaction {
   int release_tensile();
   // The largest |normal force| over the points of each kind at the last evaluation: [point, line].
   std::array<double, 2> largest_normal_forces() const;
-  // Augmented stick (ContactSettings::stick_augmentations): every sticking crossing, and every sticking line point that
-  // carries a tenth of the largest line load or more, whose stick points have moved apart by more than the tolerance,
+  // Augmented stick (ContactSettings::stick_augmentations): every sticking crossing under pressure, and every sticking line
+  // point that carries a tenth of the largest line load or more, whose stick points have moved apart by more than the tolerance,
   // takes that elastic slip into its stick offset (the force it carries there doubles its penalty part, and Newton
   // goes on). Returns how many points changed; 0 once the rounds are spent.
   int augment_stick();

@@ -310,6 +310,12 @@ bool StaticAnalysis::solve_increment(const IncrementAttempt& attempt, const std:
   // The converged iterate before the last augmentation round: where a failure after a round returns to.
   std::vector<NodeState> converged_round;
   double round_load_norm = 0;  // the load norm there
+  // Rounds end once one has moved the nodes and the loads (reactions included) by less than Newton's own tests allow.
+  const auto last_round_settled = [&] {
+    const double motion_tolerance = opt.displacement_tolerance;
+    return !converged_round.empty() && motion2(state_, converged_round) <= motion_tolerance * motion_tolerance * increment_displacement2 &&
+           std::abs(current.state.force - round_load_norm) <= opt.force_tolerance * std::max(current.state.force, round_load_norm);
+  };
   const auto fail = [&](AttemptFailure why) {
     report.failure = why;
     report.kept_converged_round = !converged_round.empty();
@@ -340,12 +346,7 @@ bool StaticAnalysis::solve_increment(const IncrementAttempt& attempt, const std:
       report.state_changes = changes_at_convergence();
       report.augmented_points = 0;
       if (report.state_changes == 0) {
-        // Rounds end once one moves the nodes and the loads (reactions included) by less than Newton's own tests
-        // allow.
-        const double motion_tolerance = opt.displacement_tolerance;
-        if (!converged_round.empty() && motion2(state_, converged_round) <= motion_tolerance * motion_tolerance * increment_displacement2 &&
-            std::abs(current.state.force - round_load_norm) <= opt.force_tolerance * std::max(current.state.force, round_load_norm))
-          return true;
+        if (last_round_settled()) return true;
         round_load_norm = current.state.force;
         report.augmented_points = augment_at_convergence();
         if (report.augmented_points == 0) return true;
