@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include "strandfem/io/case_file.hpp"
+#include "strandfem/io/case_keys.hpp"
 #include "strandfem/core/archive.hpp"
 #include "strandfem/io/case_run.hpp"
 #include "strandfem/io/case_sweep.hpp"
@@ -262,6 +263,7 @@ int main(int argc, char** argv) {
   sweep->add_flag("-q,--quiet", quiet, "No progress lines");
   auto* info = app.add_subcommand("info", "Print model sizes and analytic references as JSON, without solving");
   info->add_option("case", case_path, "Case file (YAML)")->required();
+  auto* keys = app.add_subcommand("keys", "Print the solver and contact keys with type, range, default and meaning (docs/case-files.md)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -278,6 +280,13 @@ int main(int argc, char** argv) {
         return kExitOutputError;
       }
       return 0;
+    }
+    if (keys->parsed()) {
+      std::cout << "| key | type, unit, range | default | meaning |\n|---|---|---|---|\n";
+      for (const std::string& row : strandfem::setting_key_rows(strandfem::KeySection::kPhysics)) std::cout << row << "\n";
+      std::cout << "\n| key | type, unit, range | default | meaning | when to touch |\n|---|---|---|---|---|\n";
+      for (const std::string& row : strandfem::setting_key_rows(strandfem::KeySection::kAdvanced)) std::cout << row << "\n";
+      return std::cout ? 0 : kExitOutputError;
     }
     if (sweep->parsed()) return run_sweep_command({sweep_cases, sweep_key, sweep_values, sweep_settings, output_dir}, threads, quiet);
     return run_case_file(case_path, output_dir, threads, quiet, verbose, plots, resume, stop_after, dump_tangent);

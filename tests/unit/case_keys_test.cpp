@@ -1,5 +1,5 @@
-// Requirement: docs/case-files.md lists exactly the keys the reader accepts (case_key_table), both ways, and the
-// defaults of the solver and contact keys the reader takes.
+// Requirement: docs/case-files.md lists exactly the keys the reader accepts (case_key_table), both ways, and writes
+// every solver and contact key with the type, range, default and meaning the reader's tables declare.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -11,6 +11,8 @@
 
 #include "strandfem/io/case_file.hpp"
 #include "strandfem/io/case_keys.hpp"
+#include "strandfem/io/contact_keys.hpp"
+#include "strandfem/io/solver_keys.hpp"
 
 namespace strandfem {
 namespace {
@@ -70,84 +72,82 @@ TEST(CaseKeys, TheDocumentationListsExactlyTheKeysTheReaderAccepts) {
 }
 
 
-// The default each `solver.*` and `contact.*` row of docs/case-files.md states: from the default column, or from
-// "default X" in the text ("default 0.005 each", "default 25, 8", "fKn (default 1), ξn (default 10)"), by key.
-std::map<std::string, std::string> documented_defaults(const std::string& page) {
-  std::map<std::string, std::string> defaults;
+// The rows of the page that start with a key's path ("| `solver.force_tolerance` |"), by path.
+std::map<std::string, std::string> documented_rows(const std::string& page) {
+  std::map<std::string, std::string> rows;
   std::ifstream in(page);
   std::string line;
-  const std::regex code("`([^`]+)`");
-  const std::regex stated("default ([^;:()]+)");
-  bool default_column = false;
-  while (std::getline(in, line)) {
-    if (line.rfind("| key |", 0) == 0) default_column = line.find("| default |") != std::string::npos;
-    if (line.rfind("| `solver.", 0) != 0 && line.rfind("| `contact.", 0) != 0) continue;
-    std::vector<std::string> cells;
-    for (std::size_t at = 1, next; (next = line.find(" |", at)) != std::string::npos; at = next + 2) cells.push_back(line.substr(at, next - at));
-    std::vector<std::string> keys;
-    std::string prefix;
-    for (auto it = std::sregex_iterator(cells[0].begin(), cells[0].end(), code); it != std::sregex_iterator(); ++it) {
-      const std::string path = (*it)[1];
-      const auto dot = path.rfind('.');
-      if (prefix.empty() && dot != std::string::npos) prefix = path.substr(0, dot + 1);
-      keys.push_back(dot == std::string::npos ? prefix + path : path);
-    }
-    std::vector<std::string> values;
-    if (default_column) {
-      values.push_back(cells.size() > 2 ? cells[2] : "");
-    } else {
-      const std::string text = line.substr(line.find(" |") + 2);
-      for (auto it = std::sregex_iterator(text.begin(), text.end(), stated); it != std::sregex_iterator(); ++it) {
-        std::string v = std::regex_replace(std::string((*it)[1]), std::regex(" each$|\\s+$"), "");
-        for (std::size_t at = 0, comma; at <= v.size(); at = comma + 2) {
-          comma = v.find(", ", at);
-          if (comma == std::string::npos) comma = v.size();
-          values.push_back(v.substr(at, comma - at));
-        }
-      }
-    }
-    const bool each = values.size() == 1;
-    for (std::size_t k = 0; k < keys.size() && (each || k < values.size()); ++k) {
-      std::string v = each ? values[0] : values[k];
-      v = std::regex_replace(v, std::regex("^\\s+|\\s+$|`"), "");
-      defaults[keys[k]] = v;
-    }
-  }
-  return defaults;
+  const std::regex row("^\\| `([a-z_.]+)` \\|");
+  std::smatch match;
+  while (std::getline(in, line))
+    if (std::regex_search(line, match, row)) rows[match[1]] = line;
+  return rows;
 }
 
-TEST(CaseKeys, TheDocumentedDefaultsAreTheOnesTheReaderTakes) {
+TEST(CaseKeys, ThePageWritesEverySettingKeyAsTheReaderDeclaresIt) {
+  const std::map<std::string, std::string> documented = documented_rows(std::string(STRANDFEM_SOURCE_DIR) + "/docs/case-files.md");
+  std::size_t compared = 0;
+  for (KeySection section : {KeySection::kPhysics, KeySection::kAdvanced})
+    for (const std::string& row : setting_key_rows(section)) {
+      const std::string path = row.substr(3, row.find('`', 3) - 3);
+      const auto page = documented.find(path);
+      ASSERT_NE(page, documented.end()) << path << " has no row of its own in docs/case-files.md (`strandfem keys` prints it)";
+      EXPECT_EQ(page->second, row) << path << ": docs/case-files.md differs from the reader's table (`strandfem keys` prints it)";
+      ++compared;
+    }
+  EXPECT_EQ(compared, solver_key_table().size() + contact_key_table().size());
+}
+
+// The defaults the table shows are those a case without the keys runs with.
+TEST(CaseKeys, TheTablesDefaultsAreTheOnesACaseTakes) {
   const CaseDefinition c = load_case_text(R"(
 materials: {steel: {E: 200000, nu: 0.3}}
 strand: {length: 60, layers: [{wires: 1, diameter: 3.0, material: steel}, {wires: 6, diameter: 3.0, material: steel, lay_angle: 10}]}
-contact: {enabled: true}
+contact: {}
 steps: [{name: pull, increments: 1, axial_strain: 0.001}]
 )",
                                           "defaults.yaml");
-  const std::map<std::string, std::string> documented = documented_defaults(std::string(STRANDFEM_SOURCE_DIR) + "/docs/case-files.md");
-  int compared = 0;
-  for (const auto& [path, text] : documented) {
-    const auto dot = path.find('.');
-    const nlohmann::json& section = c.resolved[path.substr(0, dot)];
-    const std::string key = path.substr(dot + 1);
-    if (!section.contains(key) || text.empty() || text.find(' ') != std::string::npos) continue;
-    const nlohmann::json& value = section[key];
-    if (value.is_number()) {
-      char* end = nullptr;
-      const double stated = std::strtod(text.c_str(), &end);
-      if (end == text.c_str() || *end != '\0') continue;  // a rule in words, not a number
-      EXPECT_NEAR(value.get<double>(), stated, 1e-12 * std::abs(stated)) << path;
-    } else if (value.is_boolean()) {
-      EXPECT_EQ(value.get<bool>() ? "true" : "false", text) << path;
-    } else if (value.is_string()) {
-      EXPECT_EQ(value.get<std::string>(), text) << path;
-    } else {
-      continue;
+  for (const auto& key : solver_key_table()) EXPECT_EQ(c.resolved["solver"][key.name], key.value(SolverOptions{})) << key.name;
+  for (const auto& key : contact_key_table())
+    if (key.default_rule.empty()) EXPECT_EQ(c.resolved["contact"][key.name], key.value(ContactSettings{})) << key.name;
+  EXPECT_TRUE(c.resolved["contact"]["enabled"].get<bool>());
+  EXPECT_TRUE(c.resolved["contact"]["normal_smoothing"].is_null());
+}
+
+// A value outside a key's range is refused with the key, its place in the file and the range.
+TEST(CaseKeys, AValueOutsideItsRangeNamesTheKeyAndTheRange) {
+  const auto error_of = [](const std::string& settings) {
+    try {
+      load_case_text("materials: {steel: {E: 200000, nu: 0.3}}\nstrand: {length: 60, layers: [{wires: 1, diameter: 3.0, material: steel}]}\n"
+                     "steps: [{name: pull, increments: 1, axial_strain: 0.001}]\n" + settings + "\n",
+                     "range.yaml");
+    } catch (const CaseError& e) {
+      return std::string(e.what());
     }
-    ++compared;
-  }
-  // Every solver and contact setting with a plain default (measured: 33 of them).
-  EXPECT_GE(compared, 30);
+    return std::string("accepted");
+  };
+  EXPECT_EQ(error_of("solver: {newton_forcing: 1.5}"), "range.yaml:4:26: solver.newton_forcing: expected a value in [0, 1], got 1.5");
+  EXPECT_EQ(error_of("contact: {line_contact_angle: 90}"), "range.yaml:4:31: contact.line_contact_angle: expected a value in (0, 90), got 90");
+  EXPECT_EQ(error_of("contact: {friction: 10}"), "range.yaml:4:21: contact.friction: expected a value in [0, 10), got 10");
+  EXPECT_NE(error_of("solver: {max_cutbacks: 31}").find("solver.max_cutbacks: expected an integer in 0..30"), std::string::npos);
+  EXPECT_NE(error_of("contact: {tangential_penalty: soft}").find("contact.tangential_penalty: expected one of: elastic_slip, paper"),
+            std::string::npos);
+  EXPECT_EQ(error_of("contact: {stick_tolerance: 0.5}"), "accepted");
+}
+
+TEST(SettingKeys, NumbersAndRangesAreWrittenAsThePageWritesThem) {
+  EXPECT_EQ(number_text(1e-8), "1e-8");
+  EXPECT_EQ(number_text(0.0005), "0.0005");
+  EXPECT_EQ(number_text(25), "25");
+  EXPECT_EQ(number_text(3.75), "3.75");
+  EXPECT_EQ(number_text(1e15), "1e15");
+  EXPECT_EQ(NumberRange::positive().text(), "> 0");
+  EXPECT_EQ(NumberRange::non_negative().text(), "≥ 0");
+  EXPECT_EQ(NumberRange::half_open(0, 0.5).text(), "in [0, 0.5)");
+  EXPECT_TRUE(NumberRange::half_open(0, 1).contains(0));
+  EXPECT_FALSE(NumberRange::half_open(0, 1).contains(1));
+  EXPECT_FALSE(NumberRange::open(0, 90).contains(0));
+  EXPECT_TRUE(NumberRange::closed(0, 1).contains(1));
 }
 
 TEST(CaseKeys, EveryMappingOfTheTableIsFoundByName) {

@@ -148,7 +148,7 @@ TEST(InputChecks, ContradictoryAndNonPhysicalValuesAreRefused) {
       {"length_1e-11", kSeven, {{"length: 200", "length: 1e-11"}}, {"mesh.elements_per_wire", "round-off"}},
       {"tiny_beam", kBeam, {{"end: [100, 0, 0]", "end: [1.0e-9, 0, 0]"}}, {"beams[0].elements", "round-off"}},
       {"stabilization_above_one", kSeven, {{"steps:", "contact: {stabilization: 2}\nsteps:"}},
-       {"contact.stabilization", "below 1"}},
+       {"contact.stabilization", "in [0, 1)"}},
       {"stabilization_negative", kSeven, {{"steps:", "contact: {stabilization: -1.0e-6}\nsteps:"}},
        {"contact.stabilization"}},
       {"contacts_unknown", kSeven,

@@ -1,5 +1,8 @@
 #include "strandfem/io/case_keys.hpp"
 
+#include "strandfem/io/contact_keys.hpp"
+#include "strandfem/io/solver_keys.hpp"
+
 #include <stdexcept>
 
 namespace strandfem {
@@ -28,17 +31,21 @@ const std::vector<CaseKeyGroup>& case_key_table() {
       {"steps[i].forces[i]", {"at", "force", "moment"}},
       {"steps[i].motions[i]", {"at", "ux", "uy", "uz", "rx", "ry", "rz"}},
       {"output", {"every", "vtu", "monitor", "contacts", "contacts_every", "wires", "checkpoint", "clamp_edge_offset", "steady_tolerance"}},
-      {"contact", {"enabled", "friction", "friction_pairs", "friction_zones", "orthotropy_ratio", "friction_direction", "axis", "normal_factor",
-                   "normal_multiplier", "tangential_penalty", "elastic_slip", "stick_augmentations", "stick_tolerance", "tangential_factor", "tangential_multiplier", "search_margin",
-                   "line_contact_angle", "line_points", "initial_overlap", "touch_tolerance", "normal_smoothing", "stabilization",
-                   "pattern_margin"}},
+      {"contact", key_names(contact_key_table(), {"friction_pairs", "friction_zones", "axis"})},
       {"contact.friction_pairs[i]", {"materials", "mu", "orthotropy_ratio", "contacts"}},
       {"contact.friction_zones[i]", {"z", "mu", "materials", "contacts"}},
-      {"solver", {"force_tolerance", "moment_tolerance", "displacement_tolerance", "load_tolerance", "max_iterations", "max_cutbacks",
-                  "line_search_cuts", "linear_solver", "krylov_iterations", "refinement_iterations", "krylov_tolerance", "newton_forcing",
-                  "extrapolate", "stabilization", "stabilization_ramp_off", "automatic_stabilization", "threads"}},
+      {"solver", key_names(solver_key_table())},
   };
   return table;
+}
+
+std::vector<std::string> setting_key_rows(KeySection section) {
+  std::vector<std::string> rows;
+  for (const auto& key : solver_key_table())
+    if (key.section == section) rows.push_back(key_row("solver", key));
+  for (const auto& key : contact_key_table())
+    if (key.section == section) rows.push_back(key_row("contact", key));
+  return rows;
 }
 
 const std::vector<const char*>& allowed_keys(const std::string& mapping) {

@@ -10,6 +10,8 @@ namespace strandfem {
 
 namespace {
 
+const NumberRange kFrictionRange = NumberRange::half_open(0, 10);  // Coulomb coefficients the reader accepts
+
 std::string material_name(const YamlReader& reader, const YAML::Node& node, const std::string& path,
                           const std::map<std::string, Material>& materials) {
   const std::string name = reader.text(node, path);
@@ -24,14 +26,107 @@ std::pair<std::string, std::string> material_pair(const YamlReader& reader, cons
 }
 }  // namespace
 
+const std::vector<SettingKey<ContactSettings>>& contact_key_table() {
+  using S = ContactSettings;
+  static const std::vector<SettingKey<S>> table = [] {
+    std::vector<SettingKey<S>> t = {
+        boolean_key("enabled", &S::enabled, "`false` keeps the section but turns contact off"),
+        number_key("friction", &S::friction, kFrictionRange, "μ", "the coefficient of every pair the rules below leave"),
+        number_key("orthotropy_ratio", &S::orthotropy_ratio, NumberRange::positive(), "",
+                   "μ2/μ1: μ1 along friction direction 1, μ2 across it on the contact plane (section 5.3)"),
+        choice_key("friction_direction", &S::friction_direction,
+                   {{"strand_axis", FrictionDirection::kStrandAxis}, {"slave_wire", FrictionDirection::kSlaveWire}},
+                   "what direction 1 of an orthotropic point follows on the contact plane: the strand axis (section 5.3's text), or "
+                   "the slave wire's tangent (the x axis of the paper's CONTA176 elements; the slave is the inner wire at a crossing)"),
+        number_key("normal_factor", &S::normal_factor, NumberRange::positive(), "", "fKn of eq. 2.5",
+                   "to check that a result does not depend on the penalty (a stiffer one moves the bending curve by < 1.5 %, "
+                   "docs/validation.md)"),
+        number_key("normal_multiplier", &S::normal_multiplier, NumberRange::positive(), "", "ξn of eq. 2.5", "as `normal_factor`"),
+        choice_key("tangential_penalty", &S::tangential_penalty,
+                   {{"elastic_slip", TangentialPenalty::kElasticSlip}, {"paper", TangentialPenalty::kPaper}},
+                   "stick stiffness: `elastic_slip` k_t,i = μ_i P / (elastic_slip · h) along the strand axis (i = 1) and across (2), "
+                   "P the current normal force; `paper`: eq. 2.6 with the factors below (docs/theory.md)",
+                   "`paper` to reproduce eq. 2.6 literally"),
+        number_key("elastic_slip", &S::elastic_slip, NumberRange::positive(), "fraction of the contact element length",
+                   "allowed elastic slip of a sticking point (0.005 mm for 10 mm elements, a tenth of Abaqus' default; the bending "
+                   "loop depends on it, docs/validation.md)",
+                   "to check a loop's dependence on the stick's elastic slip"),
+        integer_key("stick_augmentations", &S::stick_augmentations, 0, 100,
+                    "augmentation rounds of the stick per increment: after Newton converges, sticking points take their elastic slip "
+                    "into an offset and Newton corrects again, so that the stick tends to Coulomb's and the loop no longer depends on "
+                    "`elastic_slip`; line contacts carrying under a tenth of the largest line load keep the penalty stick; the rounds "
+                    "also end once one moves the nodes by less than `solver.displacement_tolerance` of the increment's motion and the "
+                    "loads by less than `solver.force_tolerance` (0: the penalty stick alone; docs/theory.md, \"Augmented stick\")",
+                    "5 for bending loops that must not depend on the elastic slip (docs/validation/regularization.md gives the cost)"),
+        number_key("stick_tolerance", &S::stick_tolerance, NumberRange::below(1), "",
+                   "the rounds stop once no sticking point has slipped elastically by more than this fraction of its allowed slip",
+                   "convergence studies of the augmented stick"),
+        number_key("tangential_factor", &S::tangential_factor, NumberRange::positive(), "", "fKt of eq. 2.6 (`tangential_penalty: paper`)",
+                   "only with `tangential_penalty: paper`"),
+        number_key("tangential_multiplier", &S::tangential_multiplier, NumberRange::positive(), "", "ξt of eq. 2.6",
+                   "only with `tangential_penalty: paper`"),
+        number_key("search_margin", &S::search_margin, NumberRange::positive(), "mm",
+                   "boxes inflated by radius + margin; re-search after a node moved margin/2",
+                   "raise for large sideways motions of wires between searches"),
+        number_key("line_contact_angle", &S::line_contact_angle, NumberRange::open(0, 90), "deg",
+                   "for wires the strand's layout does not classify (beam lines, layers laid the same way): centerlines closer than "
+                   "this are in line contact, others in point contact. Wires of one layer and a helix on the core are always in line "
+                   "contact, helices of opposite hand in different layers always cross (docs/theory.md, Search)",
+                   "beam cases whose wires cross at small angles"),
+        integer_key("line_points", &S::line_points, 1, 10, "Gauss points per slave element of a line contact",
+                    "convergence studies of line contact"),
+        choice_key("initial_overlap", &S::initial_overlap, {{"offset", InitialOverlap::kOffset}, {"keep", InitialOverlap::kKeep}},
+                   "`offset`: each point's reference overlap (and gaps below `touch_tolerance`) is subtracted, stress-free start; "
+                   "`keep`: pressed out in the first increment",
+                   "`keep` to let a nominal overlap be pressed out as a load"),
+        number_key("touch_tolerance", &S::touch_tolerance, NumberRange::half_open(0, 0.5), "fraction of r_a + r_b",
+                   "reference gaps below it count as touching: offset to zero, stick anchors set there (0.02: 0.07 mm for 3.3 mm "
+                   "wires; nominal helix geometry leaves layer-to-layer gaps of that order)",
+                   "layers whose nominal radii leave gaps larger than 2 % of the wire radii"),
+        number_key("stabilization", &S::stabilization, NumberRange::half_open(0, 1), "fraction of the normal penalty",
+                   "contact stabilization: at every contact point a tangential spring of this fraction of the normal penalty on the "
+                   "motion of the two surface points since the last converged increment (restarted at each one, so a damper in load "
+                   "time), beside friction (0: none); its energy is added to summary.json's `energy.stabilization_energy_Nmm` "
+                   "(docs/theory.md, \"Contact stabilization\")",
+                   "the automatic stabilization switches it on (1e-4) where a step cannot go on; set it for strands whose contacts "
+                   "slide freely and whose wires shift sideways along their layer (frictionless strands, `tangential_penalty: paper`)"),
+        number_key("pattern_margin", &S::pattern_margin, NumberRange::half_open(0, 1), "fraction of r_a + r_b",
+                   "element pairs enter the tangent's sparsity pattern once a point is closed or open by less than this, leave beyond "
+                   "twice it; a point that closes outside the pattern widens it at once. Results do not depend on it (tested to 1e-6)",
+                   "performance only"),
+    };
+    // The onset width is optional: left out, it follows the thinner wire's diameter.
+    SettingKey<S> smoothing = described_key<S>("normal_smoothing", "mm, " + NumberRange::non_negative().text(),
+                            "width s of the band over which the normal force sets in, k_n (g − s)² / (4 s) for \\|g\\| < s, where halving "
+                            "it moves no result (docs/theory.md, \"Normal onset\"); 0: the plain penalty law",
+                            "widen (to about 1e-3 mm) to run a study of many bending variants 2 to 10 times faster, at the price of first "
+                            "loops 1–6 % smaller on Cardinal (docs/validation/default-settings.md); 0 to compare with a code that uses "
+                            "the plain law");
+    smoothing.read = [](const YamlReader& reader, const YAML::Node& node, const std::string& path, S& s) {
+      s.normal_smoothing = reader.non_negative(node, path, "mm");
+    };
+    smoothing.value = [](const S& s) { return s.normal_smoothing ? nlohmann::json(*s.normal_smoothing) : nlohmann::json(nullptr); };
+    smoothing.default_rule = number_text(kNormalOnsetPerDiameter) + " × the thinner wire's diameter";
+    t.push_back(smoothing);
+    for (SettingKey<S>& key : t)
+      if (key.name == "enabled" || key.name == "friction" || key.name == "orthotropy_ratio" || key.name == "friction_direction")
+        key.section = KeySection::kPhysics;
+    t.front().default_rule = "true";  // a `contact` section is on unless it says otherwise
+    return t;
+  }();
+  return table;
+}
+
 ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Node& node,
                                        const std::map<std::string, Material>& materials, bool strand) {
-  reader.check_keys(node, "contact", allowed_keys("contact"));
+  static const std::vector<const char*> names = key_names(contact_key_table(), {"friction_pairs", "friction_zones", "axis"});
+  reader.check_keys(node, "contact", names);
   ContactSettings c;
-  c.enabled = node["enabled"] ? reader.boolean(node["enabled"], "contact.enabled") : true;
+  c.enabled = true;
+  read_setting_keys(reader, node, "contact", contact_key_table(), c);
   auto friction = [&](const YAML::Node& n, const std::string& path) {
-    const double mu = reader.non_negative(n, path, "-");
-    if (mu >= 10) reader.fail(n, path, "expected a friction coefficient below 10");
+    const double mu = reader.number(n, path);
+    if (!kFrictionRange.contains(mu)) reader.fail(n, path, "expected a friction coefficient " + kFrictionRange.text() + ", got " + n.Scalar());
     return mu;
   };
   // The interface an entry is limited to (paper section 2.2): none, lateral or radial contacts alone.
@@ -41,7 +136,6 @@ ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Nod
     return reader.choice(n, path + ".contacts", {"lateral", "radial"}) == "radial" ? ContactInterface::kRadial
                                                                                  : ContactInterface::kLateral;
   };
-  if (node["friction"]) c.friction = friction(node["friction"], "contact.friction");
   if (const YAML::Node pairs = node["friction_pairs"]) {
     if (!pairs.IsSequence()) reader.fail(pairs, "contact.friction_pairs", "expected a list of {materials: [a, b], mu}");
     for (std::size_t i = 0; i < pairs.size(); ++i) {
@@ -74,53 +168,6 @@ ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Nod
       c.zone_friction.push_back(zone);
     }
   }
-  auto positive = [&](const char* key, double& value, const char* unit) {
-    if (node[key]) value = reader.positive(node[key], std::string("contact.") + key, unit);
-  };
-  positive("orthotropy_ratio", c.orthotropy_ratio, "-");
-  positive("normal_factor", c.normal_factor, "-");
-  positive("tangential_factor", c.tangential_factor, "-");
-  positive("normal_multiplier", c.normal_multiplier, "-");
-  positive("tangential_multiplier", c.tangential_multiplier, "-");
-  positive("search_margin", c.search_margin, "mm");
-  positive("elastic_slip", c.elastic_slip, "fraction of the contact element length");
-  if (node["stick_augmentations"])
-    c.stick_augmentations = reader.integer(node["stick_augmentations"], "contact.stick_augmentations", 0, 100);
-  if (node["stick_tolerance"]) {
-    c.stick_tolerance = reader.positive(node["stick_tolerance"], "contact.stick_tolerance", "fraction of the allowed elastic slip");
-    if (c.stick_tolerance >= 1) reader.fail(node["stick_tolerance"], "contact.stick_tolerance", "expected a fraction of the allowed elastic slip below 1");
-  }
-  if (node["normal_smoothing"])
-    c.normal_smoothing = reader.non_negative(node["normal_smoothing"], "contact.normal_smoothing", "mm");
-  if (const YAML::Node n = node["stabilization"]) {
-    c.stabilization = reader.non_negative(n, "contact.stabilization", "fraction of the normal penalty");
-    if (c.stabilization >= 1)
-      reader.fail(n, "contact.stabilization", "expected a fraction of the normal penalty below 1 (e.g. 1e-6)");
-  }
-  if (node["tangential_penalty"])
-    c.tangential_penalty = reader.choice(node["tangential_penalty"], "contact.tangential_penalty", {"paper", "elastic_slip"}) == "paper"
-                               ? TangentialPenalty::kPaper : TangentialPenalty::kElasticSlip;
-  if (node["line_contact_angle"]) {
-    c.line_contact_angle = reader.positive(node["line_contact_angle"], "contact.line_contact_angle", "degrees");
-    if (c.line_contact_angle >= 90) reader.fail(node["line_contact_angle"], "contact.line_contact_angle", "expected an angle in (0, 90) degrees");
-  }
-  if (node["line_points"]) {
-    c.line_points = reader.integer(node["line_points"], "contact.line_points", 1, 10);  // Gauss points per element
-  }
-  if (node["touch_tolerance"]) {
-    c.touch_tolerance = reader.non_negative(node["touch_tolerance"], "contact.touch_tolerance", "fraction of r_a + r_b");
-    if (c.touch_tolerance >= 0.5) reader.fail(node["touch_tolerance"], "contact.touch_tolerance", "expected a fraction of the radius sum below 0.5");
-  }
-  if (node["pattern_margin"]) {
-    c.pattern_margin = reader.non_negative(node["pattern_margin"], "contact.pattern_margin", "fraction of r_a + r_b");
-    if (c.pattern_margin >= 1) reader.fail(node["pattern_margin"], "contact.pattern_margin", "expected a fraction of the radius sum below 1");
-  }
-  if (node["friction_direction"])
-    c.friction_direction = reader.choice(node["friction_direction"], "contact.friction_direction", {"strand_axis", "slave_wire"}) == "slave_wire"
-                               ? FrictionDirection::kSlaveWire : FrictionDirection::kStrandAxis;
-  if (node["initial_overlap"])
-    c.initial_overlap = reader.choice(node["initial_overlap"], "contact.initial_overlap", {"offset", "keep"}) == "offset"
-                            ? InitialOverlap::kOffset : InitialOverlap::kKeep;
   if (node["axis"]) {
     if (strand) reader.fail(node["axis"], "contact.axis", "strands use their own axis (z); 'axis' is for beam cases");
     const auto a = reader.numbers(node["axis"], "contact.axis", 3);
@@ -131,18 +178,9 @@ ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Nod
 }
 
 nlohmann::json resolved_contact_settings(const ContactSettings& k) {
-  nlohmann::json resolved = {{"enabled", k.enabled}, {"friction", k.friction}, {"orthotropy_ratio", k.orthotropy_ratio},
-                             {"friction_direction", to_string(k.friction_direction)},
-                             {"normal_factor", k.normal_factor}, {"tangential_factor", k.tangential_factor},
-                             {"normal_multiplier", k.normal_multiplier}, {"tangential_multiplier", k.tangential_multiplier},
-                             {"tangential_penalty", k.tangential_penalty == TangentialPenalty::kPaper ? "paper" : "elastic_slip"},
-                             {"elastic_slip", k.elastic_slip}, {"stick_augmentations", k.stick_augmentations}, {"stick_tolerance", k.stick_tolerance},
-                             {"search_margin", k.search_margin}, {"pattern_margin", k.pattern_margin}, {"line_contact_angle", k.line_contact_angle},
-                             {"line_points", k.line_points},
-                             {"initial_overlap", k.initial_overlap == InitialOverlap::kOffset ? "offset" : "keep"}, {"touch_tolerance", k.touch_tolerance},
-                             {"normal_smoothing", k.normal_smoothing ? nlohmann::json(*k.normal_smoothing) : nlohmann::json(nullptr)},
-                             {"normal_onset_per_diameter", k.normal_smoothing ? nlohmann::json(nullptr) : nlohmann::json(kNormalOnsetPerDiameter)}, {"stabilization", k.stabilization},
-                             {"zones", k.zone_friction.size()}};
+  nlohmann::json resolved = resolved_setting_keys(contact_key_table(), k);
+  resolved["normal_onset_per_diameter"] = k.normal_smoothing ? nlohmann::json(nullptr) : nlohmann::json(kNormalOnsetPerDiameter);
+  resolved["zones"] = k.zone_friction.size();
   // Each material pair with the coefficient and the mu2/mu1 it runs with (outside zones) on the interfaces it
   // names; mu and orthotropy_ratio also at the top where they are the same on all of them.
   nlohmann::json pairs = nlohmann::json::array();

@@ -6,9 +6,14 @@
 
 #include "strandfem/beam/section.hpp"
 #include "strandfem/contact/contact_settings.hpp"
+#include "strandfem/io/setting_keys.hpp"
 #include "strandfem/io/yaml_reader.hpp"
 
 namespace strandfem {
+
+// The scalar keys of `contact:`, each with its type, range, default and meaning; `friction_pairs`,
+// `friction_zones` and `axis` are read by parse_contact_settings itself.
+const std::vector<SettingKey<ContactSettings>>& contact_key_table();
 
 // Reads and validates `contact:` (docs/case-files.md); `strand`: the case is a strand (no `axis` key).
 // Throws CaseError naming the key.

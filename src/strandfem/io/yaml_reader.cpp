@@ -78,12 +78,12 @@ bool YamlReader::boolean(const YAML::Node& node, const std::string& path) const 
 }
 
 std::string YamlReader::choice(const YAML::Node& node, const std::string& path,
-                               std::initializer_list<const char*> options) const {
+                               const std::vector<std::string>& options) const {
   const std::string v = text(node, path);
   std::string list;
-  for (const char* o : options) {
+  for (const std::string& o : options) {
     if (v == o) return v;
-    list += std::string(list.empty() ? "" : ", ") + o;
+    list += (list.empty() ? "" : ", ") + o;
   }
   fail(node, path, "expected one of: " + list + "; got '" + v + "'");
 }

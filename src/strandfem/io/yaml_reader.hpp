@@ -39,7 +39,10 @@ class YamlReader {
   int integer(const YAML::Node& node, const std::string& path, int minimum, int maximum) const;
   std::string text(const YAML::Node& node, const std::string& path) const;
   bool boolean(const YAML::Node& node, const std::string& path) const;
-  std::string choice(const YAML::Node& node, const std::string& path, std::initializer_list<const char*> options) const;
+  std::string choice(const YAML::Node& node, const std::string& path, const std::vector<std::string>& options) const;
+  std::string choice(const YAML::Node& node, const std::string& path, std::initializer_list<const char*> options) const {
+    return choice(node, path, std::vector<std::string>(options.begin(), options.end()));
+  }
   std::vector<double> numbers(const YAML::Node& node, const std::string& path, std::size_t count) const;
 
  private:
