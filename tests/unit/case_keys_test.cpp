@@ -12,6 +12,7 @@
 #include "strandfem/io/case_file.hpp"
 #include "strandfem/io/case_keys.hpp"
 #include "strandfem/io/contact_keys.hpp"
+#include "strandfem/io/output_keys.hpp"
 #include "strandfem/io/solver_keys.hpp"
 
 namespace strandfem {
@@ -95,7 +96,7 @@ TEST(CaseKeys, ThePageWritesEverySettingKeyAsTheReaderDeclaresIt) {
       EXPECT_EQ(page->second, row) << path << ": docs/case-files.md differs from the reader's table (`strandfem keys` prints it)";
       ++compared;
     }
-  EXPECT_EQ(compared, solver_key_table().size() + contact_key_table().size());
+  EXPECT_EQ(compared, solver_key_table().size() + contact_key_table().size() + output_key_table().size());
 }
 
 // The defaults the table shows are those a case without the keys runs with.
@@ -110,6 +111,8 @@ steps: [{name: pull, increments: 1, axial_strain: 0.001}]
   for (const auto& key : solver_key_table()) EXPECT_EQ(c.resolved["solver"][key.name], key.value(SolverOptions{})) << key.name;
   for (const auto& key : contact_key_table())
     if (key.default_rule.empty()) EXPECT_EQ(c.resolved["contact"][key.name], key.value(ContactSettings{})) << key.name;
+  for (const auto& key : output_key_table())
+    if (key.default_rule.empty()) EXPECT_EQ(c.resolved["output"][key.name], key.value(OutputOptions{})) << key.name;
   EXPECT_TRUE(c.resolved["contact"]["enabled"].get<bool>());
   EXPECT_TRUE(c.resolved["contact"]["normal_smoothing"].is_null());
 }

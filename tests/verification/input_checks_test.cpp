@@ -113,7 +113,7 @@ TEST(InputChecks, ClampAndSaddleLengthsFitTheStrand) {
 TEST(InputChecks, SteadyToleranceIsAFractionBelowOne) {
   expect_exit_2({
       {"steady_zero", kSeven, {{"steps:", "output: {steady_tolerance: 0}\nsteps:"}}, {"output.steady_tolerance", "positive"}},
-      {"steady_percent", kSeven, {{"steps:", "output: {steady_tolerance: 2}\nsteps:"}}, {"output.steady_tolerance", "below 1"}},
+      {"steady_percent", kSeven, {{"steps:", "output: {steady_tolerance: 2}\nsteps:"}}, {"output.steady_tolerance", "in (0, 1)"}},
       {"steady_text", kSeven, {{"steps:", "output: {steady_tolerance: two}\nsteps:"}}, {"output.steady_tolerance"}},
   });
 }

@@ -4,6 +4,7 @@
 #include "strandfem/io/contact_keys.hpp"
 #include "strandfem/io/resolved_configuration.hpp"
 #include "strandfem/io/load_keys.hpp"
+#include "strandfem/io/output_keys.hpp"
 #include "strandfem/io/solver_keys.hpp"
 #include "strandfem/io/yaml_document.hpp"
 
@@ -347,30 +348,15 @@ class CaseParser {
   }
 
   void parse_output(const YAML::Node& node) {
-    reader_.check_keys(node, "output", allowed_keys("output"));
-    if (node["steady_tolerance"]) {
-      const double tolerance = reader_.positive(node["steady_tolerance"], "output.steady_tolerance", "fraction");
-      if (tolerance >= 1)
-        reader_.fail(node["steady_tolerance"], "output.steady_tolerance", "expected a fraction below 1 (0.02 is 2 %)");
-      out_.output.steady_tolerance = tolerance;
-    }
-    if (node["clamp_edge_offset"]) {
-      const double offset = reader_.non_negative(node["clamp_edge_offset"], "output.clamp_edge_offset", "mm");
-      if (!out_.strand) reader_.fail(node["clamp_edge_offset"], "output.clamp_edge_offset", "only strands have clamps");
-      if (offset >= 0.5 * out_.axial_length)
-        reader_.fail(node["clamp_edge_offset"], "output.clamp_edge_offset",
+    static const std::vector<const char*> names = key_names(output_key_table(), {"monitor"});
+    reader_.check_keys(node, "output", names);
+    read_setting_keys(reader_, node, "output", output_key_table(), out_.output);
+    if (const YAML::Node offset = node["clamp_edge_offset"]) {
+      if (!out_.strand) reader_.fail(offset, "output.clamp_edge_offset", "only strands have clamps");
+      if (out_.output.clamp_edge_offset >= 0.5 * out_.axial_length)
+        reader_.fail(offset, "output.clamp_edge_offset",
                      fmt::format("expected a distance below half the strand length ({} mm)", 0.5 * out_.axial_length));
-      out_.output.clamp_edge_offset = offset;
     }
-    if (node["checkpoint"]) out_.output.checkpoint = reader_.boolean(node["checkpoint"], "output.checkpoint");
-    if (node["wires"]) out_.output.wires = reader_.boolean(node["wires"], "output.wires");
-    if (node["contacts"]) out_.output.contacts = reader_.boolean(node["contacts"], "output.contacts");
-    if (node["contacts_every"]) {
-      out_.output.contacts_every = reader_.integer(node["contacts_every"], "output.contacts_every", 1, std::numeric_limits<int>::max());
-      out_.output.contacts_every_set = true;
-    }
-    if (node["every"]) out_.output.every = reader_.integer(node["every"], "output.every", 1, std::numeric_limits<int>::max());
-    if (node["vtu"]) out_.output.vtu = reader_.boolean(node["vtu"], "output.vtu");
     if (node["monitor"]) out_.monitor_node = node_at(node["monitor"], "output.monitor");
   }
 

@@ -1,6 +1,7 @@
 #include "strandfem/io/case_keys.hpp"
 
 #include "strandfem/io/contact_keys.hpp"
+#include "strandfem/io/output_keys.hpp"
 #include "strandfem/io/solver_keys.hpp"
 
 #include <stdexcept>
@@ -30,7 +31,7 @@ const std::vector<CaseKeyGroup>& case_key_table() {
       {"steps[i].transverse_force", {"value", "z", "direction", "through", "saddle_length"}},
       {"steps[i].forces[i]", {"at", "force", "moment"}},
       {"steps[i].motions[i]", {"at", "ux", "uy", "uz", "rx", "ry", "rz"}},
-      {"output", {"every", "vtu", "monitor", "contacts", "contacts_every", "wires", "checkpoint", "clamp_edge_offset", "steady_tolerance"}},
+      {"output", key_names(output_key_table(), {"monitor"})},
       {"contact", key_names(contact_key_table(), {"friction_pairs", "friction_zones", "axis"})},
       {"contact.friction_pairs[i]", {"materials", "mu", "orthotropy_ratio", "contacts"}},
       {"contact.friction_zones[i]", {"z", "mu", "materials", "contacts"}},
@@ -45,6 +46,8 @@ std::vector<std::string> setting_key_rows(KeySection section) {
     if (key.section == section) rows.push_back(key_row("solver", key));
   for (const auto& key : contact_key_table())
     if (key.section == section) rows.push_back(key_row("contact", key));
+  for (const auto& key : output_key_table())
+    if (key.section == section) rows.push_back(key_row("output", key));
   return rows;
 }
 

@@ -1,5 +1,7 @@
 #include "strandfem/io/resolved_configuration.hpp"
 
+#include "strandfem/io/output_keys.hpp"
+
 #include <numbers>
 
 namespace strandfem {
@@ -52,15 +54,7 @@ void add_resolved_model(const CaseDefinition& c, nlohmann::json& resolved) {
   nlohmann::json steps = nlohmann::json::array();
   for (const LoadStep& s : c.model.steps) steps.push_back({{"name", s.name}, {"increments", s.increments}, {"cycles", s.cycles}});
   resolved["steps"] = steps;
-  const OutputOptions& o = c.output;
-  resolved["output"] = {{"every", o.every},
-                        {"vtu", o.vtu},
-                        {"contacts", o.contacts},
-                        {"contacts_every", o.contacts_every},
-                        {"wires", o.wires},
-                        {"checkpoint", o.checkpoint},
-                        {"clamp_edge_offset", o.clamp_edge_offset},
-                        {"steady_tolerance", o.steady_tolerance}};
+  resolved["output"] = resolved_setting_keys(output_key_table(), c.output);
 }
 
 }  // namespace strandfem

@@ -67,8 +67,10 @@ SettingKey<Settings> number_key(std::string name, double Settings::*member, Numb
   if (!unit.empty()) type = unit + (type.rfind("in ", 0) == 0 ? " " : ", ") + type;
   auto key = described_key<Settings>(std::move(name), std::move(type), std::move(meaning), std::move(when_to_touch));
   key.read = [member, range, unit](const YamlReader& reader, const YAML::Node& node, const std::string& path, Settings& s) {
-    const double v = range.lower_open && range.lower == 0 ? reader.positive(node, path, unit.empty() ? "-" : unit.c_str())
-                                                          : reader.number(node, path);
+    const char* shown_unit = unit.empty() ? "-" : unit.c_str();
+    const double v = range.lower != 0 ? reader.number(node, path)
+                     : range.lower_open ? reader.positive(node, path, shown_unit)
+                                        : reader.non_negative(node, path, shown_unit);
     if (!range.contains(v)) reader.fail(node, path, "expected a value " + range.text() + ", got " + node.Scalar());
     s.*member = v;
   };
