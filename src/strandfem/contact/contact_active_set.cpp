@@ -122,7 +122,13 @@ int ContactSet::release_tensile() {
 
 int ContactSet::augment_stick() {
   if (augmentation_rounds_ >= settings_.stick_augmentations) return 0;
-  std::vector<std::pair<std::size_t, Vec3>> updates;  // point, its elastic slip on the contact plane
+  struct Update {
+    std::size_t point;
+    Vec3 elastic_slip;  // on the contact plane
+    bool above_tolerance;
+  };
+  std::vector<Update> updates;
+  bool any_above_tolerance = false;
   const double largest_line_load = largest_normal_forces()[1];
   for (std::size_t i = 0; i < points_.size(); ++i) {
     const ContactPoint& p = points_[i];
@@ -131,18 +137,23 @@ int ContactSet::augment_stick() {
         (p.kind == ContactKind::kLine && !(r.normal_force > kAugmentedLineLoadFraction * largest_line_load)))
       continue;
     const Vec3 elastic_slip = r.tangential_gap + (p.stick_offset - r.normal.dot(p.stick_offset) * r.normal);
-    if (elastic_slip.norm() > settings_.stick_tolerance * p.allowed_slip) updates.emplace_back(i, elastic_slip);
+    const bool above = elastic_slip.norm() > settings_.stick_tolerance * p.allowed_slip;
+    any_above_tolerance = any_above_tolerance || above;
+    updates.push_back({i, elastic_slip, above});
   }
-  if (updates.empty()) return 0;
+  if (!any_above_tolerance) return 0;
   converged_round_ = points_;  // what return_to_converged_round() goes back to
-  for (const auto& [i, elastic_slip] : updates) {
+  // Every sticking point is updated (Uzawa), not only those above the tolerance: a point left with its slip below
+  // the tolerance would keep it as play, different on loading and unloading, and the stick would dissipate.
+  for (const auto& [i, elastic_slip, above] : updates) {
     ContactPoint& p = points_[i];
     const Vec3& n = responses_[i].normal;
     const Vec3 offset = p.stick_offset - n.dot(p.stick_offset) * n;
     // Points the stick holds against a stiff surrounding lose a fixed share of their slip per round: Aitken's
     // extrapolation of that geometric series; the offset stays within the cone (|offset| <= allowed slip).
     const double last = p.last_augmented_slip.norm();
-    const double ratio = last > 0 && elastic_slip.dot(p.last_augmented_slip) > 0 ? std::min(elastic_slip.norm() / last, kMaxAugmentationRatio) : 0.0;
+    const double ratio = above && last > 0 && elastic_slip.dot(p.last_augmented_slip) > 0
+                             ? std::min(elastic_slip.norm() / last, kMaxAugmentationRatio) : 0.0;
     Vec3 next = offset - elastic_slip / (1.0 - ratio);
     if (next.norm() > p.allowed_slip) next *= p.allowed_slip / next.norm();
     p.stick_offset = next;

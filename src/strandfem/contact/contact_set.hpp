@@ -69,10 +69,10 @@ class ContactSet final : public Interaction {
   int release_tensile();
   // The largest |normal force| over the points of each kind at the last evaluation: [point, line].
   std::array<double, 2> largest_normal_forces() const;
-  // Augmented stick (ContactSettings::stick_augmentations): every sticking crossing under pressure, and every sticking line
-  // point that carries a tenth of the largest line load or more, whose stick points have moved apart by more than the tolerance,
-  // takes that elastic slip into its stick offset (the force it carries there doubles its penalty part, and Newton
-  // goes on). Returns how many points changed; 0 once the rounds are spent.
+  // Augmented stick (ContactSettings::stick_augmentations): once the stick points of one of them have moved apart by
+  // more than the tolerance, every sticking crossing under pressure, and every sticking line point that carries a tenth
+  // of the largest line load or more, takes its elastic slip into its stick offset (Newton goes on). Returns how many
+  // points changed; 0 when none is above the tolerance or the rounds are spent.
   int augment_stick();
   int augmentation_rounds() const { return augmentation_rounds_; }
 
