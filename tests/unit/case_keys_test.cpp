@@ -12,6 +12,7 @@
 #include "strandfem/io/case_file.hpp"
 #include "strandfem/io/case_keys.hpp"
 #include "strandfem/io/contact_keys.hpp"
+#include "strandfem/io/model_keys.hpp"
 #include "strandfem/io/output_keys.hpp"
 #include "strandfem/io/solver_keys.hpp"
 
@@ -78,7 +79,7 @@ std::map<std::string, std::string> documented_rows(const std::string& page) {
   std::map<std::string, std::string> rows;
   std::ifstream in(page);
   std::string line;
-  const std::regex row("^\\| `([a-z_.]+)` \\|");
+  const std::regex row("^\\| `([A-Za-z_.<>]+)` \\|");
   std::smatch match;
   while (std::getline(in, line))
     if (std::regex_search(line, match, row)) rows[match[1]] = line;
@@ -96,7 +97,8 @@ TEST(CaseKeys, ThePageWritesEverySettingKeyAsTheReaderDeclaresIt) {
       EXPECT_EQ(page->second, row) << path << ": docs/case-files.md differs from the reader's table (`strandfem keys` prints it)";
       ++compared;
     }
-  EXPECT_EQ(compared, solver_key_table().size() + contact_key_table().size() + output_key_table().size());
+  EXPECT_EQ(compared, solver_key_table().size() + contact_key_table().size() + output_key_table().size() + material_key_table().size() +
+                          plasticity_key_table().size() + mesh_key_table().size());
 }
 
 // The defaults the table shows are those a case without the keys runs with.

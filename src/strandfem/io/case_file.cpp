@@ -4,6 +4,7 @@
 #include "strandfem/io/contact_keys.hpp"
 #include "strandfem/io/resolved_configuration.hpp"
 #include "strandfem/io/load_keys.hpp"
+#include "strandfem/io/model_keys.hpp"
 #include "strandfem/io/output_keys.hpp"
 #include "strandfem/io/solver_keys.hpp"
 #include "strandfem/io/yaml_document.hpp"
@@ -24,9 +25,8 @@ namespace strandfem {
 namespace {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
-// Integer ranges (beside the model-size limit of the mesher): a layer of real strands has a few dozen wires.
+// Integer ranges (beside the model-size limits of the mesher): a layer of real strands has a few dozen wires.
 constexpr int kMaxWiresPerLayer = 1000;
-constexpr int kMaxElementsPerLine = (kMaxModelNodes - 1) / 2;
 
 
 class CaseParser {
@@ -68,24 +68,15 @@ class CaseParser {
       reader_.check_keys(entry.second, path, allowed_keys("materials.<name>"));
       Material m;
       m.name = name;
-      m.youngs_modulus = reader_.positive(reader_.require(entry.second, path, "E"), path + ".E", "MPa");
-      m.poisson_ratio = reader_.number(reader_.require(entry.second, path, "nu"), path + ".nu");
-      if (!(m.poisson_ratio > -1.0 && m.poisson_ratio < 0.5))
-        reader_.fail(entry.second["nu"], path + ".nu", "expected a Poisson ratio in (-1, 0.5)");
-      if (entry.second["density"]) m.density = reader_.non_negative(entry.second["density"], path + ".density", "t/mm^3");
+      read_setting_keys(reader_, entry.second, path, material_key_table(), m);
       if (const YAML::Node p = entry.second["plasticity"]) {
         const std::string pp = path + ".plasticity";
         if (!p.IsMap()) reader_.fail(p, pp, "expected {yield_stress, tangent_modulus} in MPa");
         reader_.check_keys(p, pp, allowed_keys("materials.<name>.plasticity"));
         BilinearHardening law;
-        law.yield_stress = reader_.positive(reader_.require(p, pp, "yield_stress"), pp + ".yield_stress", "MPa");
-        law.tangent_modulus = reader_.non_negative(reader_.require(p, pp, "tangent_modulus"), pp + ".tangent_modulus", "MPa");
+        read_setting_keys(reader_, p, pp, plasticity_key_table(), law);
         if (law.tangent_modulus >= m.youngs_modulus)
           reader_.fail(p["tangent_modulus"], pp + ".tangent_modulus", "expected a hardening modulus below E (" + std::to_string(m.youngs_modulus) + " MPa)");
-        if (p["stress_measure"])
-          law.stress_measure = reader_.choice(p["stress_measure"], pp + ".stress_measure", {"true_stress", "engineering"}) == "engineering"
-                                   ? StressMeasure::engineering
-                                   : StressMeasure::true_stress;
         m.plasticity = law;
       }
       materials_[name] = m;
@@ -161,8 +152,7 @@ class CaseParser {
       reader_.check_keys(mesh, "mesh", allowed_keys("mesh"));
       if (mesh["element_length"] && mesh["elements_per_wire"])
         reader_.fail(mesh, "mesh", "give either element_length or elements_per_wire, not both");
-      if (mesh["element_length"]) out_.mesh_spec.element_length = reader_.positive(mesh["element_length"], "mesh.element_length", "mm");
-      if (mesh["elements_per_wire"]) out_.mesh_spec.elements_per_wire = reader_.integer(mesh["elements_per_wire"], "mesh.elements_per_wire", 1, kMaxElementsPerLine);
+      read_setting_keys(reader_, mesh, "mesh", mesh_key_table(), out_.mesh_spec);
     }
     // The mesh's size and element length, checked before anything is allocated, against the key that set them.
     const char* mesh_key = mesh && mesh["element_length"] ? "element_length" : mesh && mesh["elements_per_wire"] ? "elements_per_wire" : nullptr;

@@ -1,6 +1,7 @@
 #include "strandfem/io/case_keys.hpp"
 
 #include "strandfem/io/contact_keys.hpp"
+#include "strandfem/io/model_keys.hpp"
 #include "strandfem/io/output_keys.hpp"
 #include "strandfem/io/solver_keys.hpp"
 
@@ -12,11 +13,11 @@ const std::vector<CaseKeyGroup>& case_key_table() {
   static const std::vector<CaseKeyGroup> table = {
       {"", {"title", "description", "expected", "materials", "strand", "beams", "mesh", "supports", "hubs", "steps", "solver", "output",
             "contact"}},
-      {"materials.<name>", {"E", "nu", "density", "plasticity"}},
-      {"materials.<name>.plasticity", {"yield_stress", "tangent_modulus", "stress_measure"}},
+      {"materials.<name>", key_names(material_key_table(), {"plasticity"})},
+      {"materials.<name>.plasticity", key_names(plasticity_key_table())},
       {"strand", {"length", "ends", "clamp_length", "layers"}},
       {"strand.layers[i]", {"wires", "diameter", "material", "lay_angle", "lay_direction", "start_angle", "start_angles"}},
-      {"mesh", {"element_length", "elements_per_wire"}},
+      {"mesh", key_names(mesh_key_table())},
       {"beams[i]", {"name", "material", "section", "shape", "elements"}},
       {"beams[i].section", {"diameter", "area", "inertia_2", "inertia_3", "torsion_constant", "shear_factor"}},
       {"beams[i].shape (straight)", {"type", "start", "end", "normal"}},
@@ -42,6 +43,12 @@ const std::vector<CaseKeyGroup>& case_key_table() {
 
 std::vector<std::string> setting_key_rows(KeySection section) {
   std::vector<std::string> rows;
+  for (const auto& key : material_key_table())
+    if (key.section == section) rows.push_back(key_row("materials.<name>", key));
+  for (const auto& key : plasticity_key_table())
+    if (key.section == section) rows.push_back(key_row("materials.<name>.plasticity", key));
+  for (const auto& key : mesh_key_table())
+    if (key.section == section) rows.push_back(key_row("mesh", key));
   for (const auto& key : solver_key_table())
     if (key.section == section) rows.push_back(key_row("solver", key));
   for (const auto& key : contact_key_table())

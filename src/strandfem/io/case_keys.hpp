@@ -22,8 +22,8 @@ const std::vector<CaseKeyGroup>& case_key_table();
 // The keys of one mapping of the table; std::logic_error for a mapping the table does not have (a bug).
 const std::vector<const char*>& allowed_keys(const std::string& mapping);
 
-// The rows of docs/case-files.md for the keys declared with their type, range and default (`solver.*`, the scalar
-// `contact.*` keys and `output.*` but `monitor`) in one section of the page, in the tables' order.
+// The rows of docs/case-files.md for the keys declared with their type, range and default (materials, plasticity,
+// mesh, the scalar contact keys, solver, output but `monitor`) in one section of the page, in the tables' order.
 std::vector<std::string> setting_key_rows(KeySection section);
 
 }  // namespace strandfem

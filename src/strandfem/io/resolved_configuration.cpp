@@ -1,5 +1,6 @@
 #include "strandfem/io/resolved_configuration.hpp"
 
+#include "strandfem/io/model_keys.hpp"
 #include "strandfem/io/output_keys.hpp"
 
 #include <numbers>
@@ -33,11 +34,8 @@ nlohmann::json resolved_strand(const CaseDefinition& c) {
 nlohmann::json resolved_materials(const StrandSpec& strand) {
   nlohmann::json materials = nlohmann::json::object();
   for (const auto& [name, m] : strand.materials) {
-    nlohmann::json j = {{"E", m.youngs_modulus}, {"nu", m.poisson_ratio}, {"density", m.density}, {"plasticity", nullptr}};
-    if (m.plasticity)
-      j["plasticity"] = {{"yield_stress", m.plasticity->yield_stress},
-                         {"tangent_modulus", m.plasticity->tangent_modulus},
-                         {"stress_measure", m.plasticity->stress_measure == StressMeasure::engineering ? "engineering" : "true_stress"}};
+    nlohmann::json j = resolved_setting_keys(material_key_table(), m);
+    j["plasticity"] = m.plasticity ? resolved_setting_keys(plasticity_key_table(), *m.plasticity) : nlohmann::json(nullptr);
     materials[name] = j;
   }
   return materials;

@@ -47,6 +47,7 @@ struct SettingKey {
   std::function<void(const YamlReader&, const YAML::Node&, const std::string& path, Settings&)> read;
   std::function<nlohmann::json(const Settings&)> value;  // the setting as the run uses it
   std::string default_rule;   // the default where it is a rule in words, not a value (else empty)
+  bool required = false;      // no default: the mapping must give it
 };
 
 // A key with its description; `read` and `value` still to be set.
@@ -136,8 +137,12 @@ std::vector<const char*> key_names(const std::vector<SettingKey<Settings>>& tabl
 template <class Settings>
 void read_setting_keys(const YamlReader& reader, const YAML::Node& node, const std::string& mapping,
                        const std::vector<SettingKey<Settings>>& table, Settings& settings) {
-  for (const auto& key : table)
-    if (const YAML::Node n = node[key.name]) key.read(reader, n, mapping + "." + key.name, settings);
+  for (const auto& key : table) {
+    if (const YAML::Node n = node[key.name])
+      key.read(reader, n, mapping + "." + key.name, settings);
+    else if (key.required)
+      reader.require(node, mapping, key.name.c_str());
+  }
 }
 
 // Every key of `table` with the value `settings` holds (summary.json's resolved configuration).
@@ -156,7 +161,7 @@ std::string default_text(const nlohmann::json& value);
 
 template <class Settings>
 std::string key_row(const std::string& mapping, const SettingKey<Settings>& key) {
-  const std::string shown = key.default_rule.empty() ? default_text(key.value(Settings{})) : key.default_rule;
+  const std::string shown = key.required ? "—" : key.default_rule.empty() ? default_text(key.value(Settings{})) : key.default_rule;
   return format_key_row(mapping + "." + key.name, key.type, shown, key.meaning, key.section, key.when_to_touch);
 }
 

@@ -17,6 +17,7 @@ namespace strandfem {
 // case (S32, 1 m) has 12,621 nodes; a model at the limit already takes seconds and gigabytes just to be built
 // (a run of elastoplastic wires keeps the fibre states of every element: 2.7 GB at the limit, measured).
 constexpr int kMaxModelNodes = 250000;
+constexpr int kMaxElementsPerLine = (kMaxModelNodes - 1) / 2;  // 3-node elements within the model-size limit
 // Elements shorter than this fraction of the coordinates' magnitude (or than kMinElementLength) would lose
 // their geometry to round-off: positions carry 16 digits, an element's strains are differences of them.
 constexpr double kMinElementLengthRatio = 1e-6;
