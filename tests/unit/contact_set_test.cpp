@@ -515,6 +515,46 @@ TEST(ContactSet, AugmentationLeavesLightlyPressedLineContactsOnThePenaltyStick) 
   }
 }
 
+// Once one sticking point is above the tolerance, a round updates every sticking point (Uzawa): a crossing slid by
+// a fiftieth of its elastic slip, below the tolerance (a twentieth), takes that slip too, exactly, while the one
+// above extrapolates (Aitken) in the next round. Alone below the tolerance, it starts no round.
+TEST(ContactSet, AugmentationUpdatesEveryStickingPointOnceOneIsAboveTheTolerance) {
+  Mesh mesh = v_wire_mesh(0.0);
+  mesh.add_line("far crossing", 2, 0, 0, 2, [](double t) { return std::make_pair(Vec3(-1.95, 20.0 * t - 10.0, 5.0), Mat3::Identity()); });
+  mesh.add_line("near crossing", 2, 1, 0, 2, [](double t) { return std::make_pair(Vec3(-1.95, 20.0 * t - 10.0, 15.0), Mat3::Identity()); });
+  ContactSet contacts;
+  contacts.initialize(mesh, augmented_friction());
+  const std::vector<NodeState> start = reference_state(mesh);
+  contacts.commit(mesh, start);
+  contacts.begin_increment(true);
+  const double s = contacts.points()[0].allowed_slip;
+  ASSERT_GT(s, 0.0);
+  auto slide = [&](double far, double near) {
+    std::vector<NodeState> state = start;
+    for (std::size_t n = 0; n < state.size(); ++n)
+      state[n].position.z() += mesh.nodes[n].wire == 1 ? far : mesh.nodes[n].wire == 2 ? near : 0.0;
+    contacts.evaluate(mesh, state, false);
+  };
+  auto offset_of_wire = [&](int wire) {
+    for (std::size_t i = 0; i < contacts.points().size(); ++i) {
+      const ContactPoint& p = contacts.points()[i];
+      if (contacts.responses()[i].status != ContactStatus::kOpen && std::max(p.wire_a, p.wire_b) == wire) return p.stick_offset.norm();
+    }
+    ADD_FAILURE() << "no closed point on wire " << wire;
+    return 0.0;
+  };
+  slide(0.0, 0.02 * s);
+  EXPECT_EQ(contacts.augment_stick(), 0);
+  slide(0.2 * s, 0.02 * s);
+  EXPECT_EQ(contacts.augment_stick(), 2);
+  EXPECT_NEAR(offset_of_wire(1), 0.2 * s, 1e-9 * s);
+  EXPECT_NEAR(offset_of_wire(2), 0.02 * s, 1e-9 * s);
+  slide(0.2 * s, 0.02 * s);  // both held apart as before: the far one extrapolates to the cone, the near one does not
+  EXPECT_EQ(contacts.augment_stick(), 2);
+  EXPECT_NEAR(offset_of_wire(1), s, 1e-9 * s);
+  EXPECT_NEAR(offset_of_wire(2), 0.04 * s, 1e-9 * s);
+}
+
 // Step control: a correction that closes a point its starting iterate had open (or within the smoothing band)
 // deeper than kDeepClosing closing depths is cut to where that point just reaches one closing depth, the gap taken
 // as linear in the fraction; points already in the penalty regime, and shallow closings, leave it whole.
