@@ -43,18 +43,16 @@ const std::vector<CaseKeyGroup>& case_key_table() {
 
 std::vector<std::string> setting_key_rows(KeySection section) {
   std::vector<std::string> rows;
-  for (const auto& key : material_key_table())
-    if (key.section == section) rows.push_back(key_row("materials.<name>", key));
-  for (const auto& key : plasticity_key_table())
-    if (key.section == section) rows.push_back(key_row("materials.<name>.plasticity", key));
-  for (const auto& key : mesh_key_table())
-    if (key.section == section) rows.push_back(key_row("mesh", key));
-  for (const auto& key : solver_key_table())
-    if (key.section == section) rows.push_back(key_row("solver", key));
-  for (const auto& key : contact_key_table())
-    if (key.section == section) rows.push_back(key_row("contact", key));
-  for (const auto& key : output_key_table())
-    if (key.section == section) rows.push_back(key_row("output", key));
+  const auto add = [&](const char* mapping, const auto& table) {
+    for (const auto& key : table)
+      if (key.section == section) rows.push_back(key_row(mapping, key));
+  };
+  add("materials.<name>", material_key_table());
+  add("materials.<name>.plasticity", plasticity_key_table());
+  add("mesh", mesh_key_table());
+  add("solver", solver_key_table());
+  add("contact", contact_key_table());
+  add("output", output_key_table());
   return rows;
 }
 
