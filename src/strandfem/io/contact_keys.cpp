@@ -28,16 +28,19 @@ std::pair<std::string, std::string> material_pair(const YamlReader& reader, cons
 
 const std::vector<SettingKey<ContactSettings>>& contact_key_table() {
   using S = ContactSettings;
+  constexpr KeySection kPhysics = KeySection::kPhysics;  // the keys a strand's description sets; the rest are advanced
   static const std::vector<SettingKey<S>> table = [] {
     std::vector<SettingKey<S>> t = {
-        boolean_key("enabled", &S::enabled, "`false` keeps the section but turns contact off"),
-        number_key("friction", &S::friction, kFrictionRange, "μ", "the coefficient of every pair the rules below leave"),
+        boolean_key("enabled", &S::enabled, "`false` keeps the section but turns contact off").in_section(kPhysics).default_is("true"),
+        number_key("friction", &S::friction, kFrictionRange, "μ", "the coefficient of every pair the rules below leave").in_section(kPhysics),
         number_key("orthotropy_ratio", &S::orthotropy_ratio, NumberRange::positive(), "",
-                   "μ2/μ1: μ1 along friction direction 1, μ2 across it on the contact plane (section 5.3)"),
+                   "μ2/μ1: μ1 along friction direction 1, μ2 across it on the contact plane (section 5.3)")
+            .in_section(kPhysics),
         choice_key("friction_direction", &S::friction_direction,
                    {{"strand_axis", FrictionDirection::kStrandAxis}, {"slave_wire", FrictionDirection::kSlaveWire}},
                    "what direction 1 of an orthotropic point follows on the contact plane: the strand axis (section 5.3's text), or "
-                   "the slave wire's tangent (the x axis of the paper's CONTA176 elements; the slave is the inner wire at a crossing)"),
+                   "the slave wire's tangent (the x axis of the paper's CONTA176 elements; the slave is the inner wire at a crossing)")
+            .in_section(kPhysics),
         number_key("normal_factor", &S::normal_factor, NumberRange::positive(), "", "fKn of eq. 2.5",
                    "to check that a result does not depend on the penalty (a stiffer one moves the bending curve by < 1.5 %, "
                    "docs/validation.md)"),
@@ -106,12 +109,8 @@ const std::vector<SettingKey<ContactSettings>>& contact_key_table() {
       s.normal_smoothing = reader.non_negative(node, path, "mm");
     };
     smoothing.value = [](const S& s) { return s.normal_smoothing ? nlohmann::json(*s.normal_smoothing) : nlohmann::json(nullptr); };
-    smoothing.default_rule = number_text(kNormalOnsetPerDiameter) + " × the thinner wire's diameter";
+    smoothing.default_is(number_text(kNormalOnsetPerDiameter) + " × the thinner wire's diameter");
     t.push_back(smoothing);
-    for (SettingKey<S>& key : t)
-      if (key.name == "enabled" || key.name == "friction" || key.name == "orthotropy_ratio" || key.name == "friction_direction")
-        key.section = KeySection::kPhysics;
-    t.front().default_rule = "true";  // a `contact` section is on unless it says otherwise
     return t;
   }();
   return table;

@@ -48,6 +48,11 @@ struct SettingKey {
   std::function<nlohmann::json(const Settings&)> value;  // the setting as the run uses it
   std::string default_rule;   // the default where it is a rule in words, not a value (else empty)
   bool required = false;      // no default: the mapping must give it
+
+  SettingKey& in_section(KeySection where) { section = where; return *this; }
+  SettingKey& must_be_given() { required = true; return *this; }
+  SettingKey& default_is(std::string rule) { default_rule = std::move(rule); return *this; }
+  SettingKey& typed(std::string text) { type = std::move(text); return *this; }
 };
 
 // A key with its description; `read` and `value` still to be set.
@@ -122,6 +127,13 @@ SettingKey<Settings> choice_key(std::string name, Value Settings::*member, std::
     return nlohmann::json(nullptr);
   };
   return key;
+}
+
+// The keys of a table that all belong to one section of the page.
+template <class Settings>
+std::vector<SettingKey<Settings>> keys_in_section(KeySection section, std::vector<SettingKey<Settings>> table) {
+  for (auto& key : table) key.section = section;
+  return table;
 }
 
 // The table's key names, for YamlReader::check_keys (with `extra` keys a mapping reads by code of its own).
