@@ -310,6 +310,7 @@ bool StaticAnalysis::solve_increment(const IncrementAttempt& attempt, const std:
   // The converged iterate before the last augmentation round: where a failure after a round returns to.
   std::vector<NodeState> converged_round;
   double round_load_norm = 0;  // the load norm there
+  double round_residual = 0;   // and its relative residual
   // Rounds end once one has moved the nodes and the loads (reactions included) by less than Newton's own tests allow.
   const auto last_round_settled = [&] {
     const double motion_tolerance = opt.displacement_tolerance;
@@ -325,6 +326,7 @@ bool StaticAnalysis::solve_increment(const IncrementAttempt& attempt, const std:
     state_ = converged_round;
     for (Interaction* interaction : model_state_.interactions()) interaction->return_to_converged_round();
     evaluate_residual(rhs);
+    report.residual_norm = round_residual;  // the increment's record is the iterate it keeps
     ++statistics_.abandoned_augmentations;
     return true;
   };
@@ -348,6 +350,7 @@ bool StaticAnalysis::solve_increment(const IncrementAttempt& attempt, const std:
       if (report.state_changes == 0) {
         if (last_round_settled()) return true;
         round_load_norm = current.state.force;
+        round_residual = current.relative;
         report.augmented_points = augment_at_convergence();
         if (report.augmented_points == 0) return true;
         if (report.corrections_before_rounds < 0) report.corrections_before_rounds = report.corrections;
