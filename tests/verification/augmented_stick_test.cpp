@@ -17,6 +17,20 @@
 namespace strandfem::verification {
 namespace {
 
+// A shipped case file's text with its first `key` text replaced (nothing replaced for an empty key); a key the file
+// does not hold fails the test.
+std::string shipped_case_with(const char* file, const std::string& key, const std::string& replacement) {
+  std::ifstream in(case_path(file));
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string yaml = text.str();
+  if (key.empty()) return yaml;
+  const auto at = yaml.find(key);
+  EXPECT_NE(at, std::string::npos) << key << " is not in " << file;
+  if (at != std::string::npos) yaml.replace(at, key.size(), replacement);
+  return yaml;
+}
+
 std::filesystem::path run_inline_case(const std::string& text, const std::string& tag) {
   const std::string file = ::testing::TempDir() + "/" + tag + ".yaml";
   std::ofstream(file) << text;
@@ -109,14 +123,9 @@ TEST(AugmentedStick, NineteenWireLoopNoLongerDependsOnTheElasticSlip) {
 // first round moves the strand by far less than Newton's tests allow, so it is its last; the axial force is the
 // penalty stick's within 1e-4 (measured 5e-5).
 TEST(AugmentedStick, RoundsThatMoveNothingEndUnderTension) {
-  std::ifstream in(case_path("cases/paper/axial/strand_19.yaml"));
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string yaml = text.str();
-  const std::string key = "friction: 0.115";
-  ASSERT_NE(yaml.find(key), std::string::npos);
-  const std::string penalty_yaml = yaml;
-  yaml.replace(yaml.find(key), key.size(), key + ", stick_augmentations: 5");
+  const std::string penalty_yaml = shipped_case_with("cases/paper/axial/strand_19.yaml", "", "");
+  const std::string yaml = shipped_case_with("cases/paper/axial/strand_19.yaml", "friction: 0.115", "friction: 0.115, stick_augmentations: 5");
+  ASSERT_NE(yaml, penalty_yaml);
   const auto augmented = nlohmann::json::parse(std::ifstream(run_inline_case(yaml, "aug_19_axial") / "summary.json"));
   const auto penalty = nlohmann::json::parse(std::ifstream(run_inline_case(penalty_yaml, "pen_19_axial") / "summary.json"));
   const int increments = 8;
@@ -130,13 +139,8 @@ TEST(AugmentedStick, RoundsThatMoveNothingEndUnderTension) {
 // history row records that iterate's residual, not the failed attempt's. The 7-wire strand at mu 5 with rounds at
 // any elastic slip abandons rounds in most bending increments (15 measured).
 TEST(AugmentedStick, AnAbandonedRoundKeepsAndRecordsTheConvergedIterate) {
-  std::ifstream in(case_path("cases/verification/bending_cycles_sticking.yaml"));
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string yaml = text.str();
-  const std::string key = "contact: {friction: 5}";
-  ASSERT_NE(yaml.find(key), std::string::npos);
-  yaml.replace(yaml.find(key), key.size(), "contact: {friction: 5, stick_augmentations: 5, stick_tolerance: 1.0e-6}");
+  const std::string yaml = shipped_case_with("cases/verification/bending_cycles_sticking.yaml", "contact: {friction: 5}",
+                                             "contact: {friction: 5, stick_augmentations: 5, stick_tolerance: 1.0e-6}");
   const auto out = run_inline_case(yaml, "aug_abandoned");
   const auto summary = nlohmann::json::parse(std::ifstream(out / "summary.json"));
   EXPECT_GE(summary["solver_statistics"]["abandoned_augmentations"].get<int>(), 1);
