@@ -79,7 +79,7 @@ std::map<std::string, std::string> documented_rows(const std::string& page) {
   std::map<std::string, std::string> rows;
   std::ifstream in(page);
   std::string line;
-  const std::regex row("^\\| `([A-Za-z_.<>]+)` \\|");
+  const std::regex row("^\\| `([A-Za-z_.<>\\[\\]]+)` \\|");
   std::smatch match;
   while (std::getline(in, line))
     if (std::regex_search(line, match, row)) rows[match[1]] = line;
@@ -98,7 +98,7 @@ TEST(CaseKeys, ThePageWritesEverySettingKeyAsTheReaderDeclaresIt) {
       ++compared;
     }
   EXPECT_EQ(compared, solver_key_table().size() + contact_key_table().size() + output_key_table().size() + material_key_table().size() +
-                          plasticity_key_table().size() + mesh_key_table().size());
+                          plasticity_key_table().size() + strand_key_table().size() + layer_key_table().size() + mesh_key_table().size());
 }
 
 // The defaults the table shows are those a case without the keys runs with.
@@ -117,6 +117,13 @@ steps: [{name: pull, increments: 1, axial_strain: 0.001}]
     if (key.default_rule.empty()) EXPECT_EQ(c.resolved["output"][key.name], key.value(OutputOptions{})) << key.name;
   EXPECT_TRUE(c.resolved["contact"]["enabled"].get<bool>());
   EXPECT_TRUE(c.resolved["contact"]["normal_smoothing"].is_null());
+  for (const auto& key : strand_key_table())
+    if (!key.required) EXPECT_EQ(c.resolved["strand"][key.name], key.value(StrandSettings{})) << key.name;
+  for (const auto& key : layer_key_table())
+    if (!key.required && key.default_rule.empty()) EXPECT_EQ(c.resolved["strand"]["layers"][1][key.name], key.value(LayerSpec{})) << key.name;
+  // The rule in words: alternating from a right-hand outer layer inward.
+  EXPECT_EQ(c.resolved["strand"]["layers"][1]["lay_direction"], "right");
+  EXPECT_EQ(c.resolved["strand"]["layers"][0]["lay_direction"], "none");
 }
 
 // A value outside a key's range is refused with the key, its place in the file and the range.
@@ -138,6 +145,21 @@ TEST(CaseKeys, AValueOutsideItsRangeNamesTheKeyAndTheRange) {
   EXPECT_NE(error_of("contact: {tangential_penalty: soft}").find("contact.tangential_penalty: expected one of: elastic_slip, paper"),
             std::string::npos);
   EXPECT_EQ(error_of("contact: {stick_tolerance: 0.5}"), "accepted");
+  // Angles are read in degrees and checked in degrees.
+  const auto layer_error = [](const std::string& outer_layer) {
+    try {
+      load_case_text("materials: {steel: {E: 200000, nu: 0.3}}\nstrand: {length: 60, layers: [{wires: 1, diameter: 3.0, material: steel}, " +
+                         outer_layer + "]}\nsteps: [{name: pull, increments: 1, axial_strain: 0.001}]\n",
+                     "layer.yaml");
+    } catch (const CaseError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(layer_error("{wires: 6, diameter: 3.0, material: steel, lay_angle: 90}"),
+            "layer.yaml:2:129: strand.layers[1].lay_angle: expected an angle in (0, 90) degrees, got 90");
+  EXPECT_NE(layer_error("{wires: 6, diameter: 3.0, material: steel}").find("layer.yaml:2:75: strand.layers[1].lay_angle: missing required key"), std::string::npos);
+  EXPECT_EQ(layer_error("{wires: 6, diameter: 3.0, material: steel, lay_angle: 10, lay_direction: left}"), "accepted");
 }
 
 TEST(SettingKeys, NumbersAndRangesAreWrittenAsThePageWritesThem) {

@@ -25,9 +25,6 @@ namespace strandfem {
 namespace {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
-// Integer ranges (beside the model-size limits of the mesher): a layer of real strands has a few dozen wires.
-constexpr int kMaxWiresPerLayer = 1000;
-
 
 class CaseParser {
  public:
@@ -102,37 +99,31 @@ class CaseParser {
 
   void parse_strand(const YAML::Node& node, const YAML::Node& mesh) {
     reader_.check_keys(node, "strand", allowed_keys("strand"));
+    StrandSettings strand;
+    read_setting_keys(reader_, node, "strand", strand_key_table(), strand);
     StrandSpec spec;
     spec.materials = materials_;
-    spec.length = reader_.positive(reader_.require(node, "strand", "length"), "strand.length", "mm");
+    spec.length = strand.length;
     const YAML::Node layers = reader_.require(node, "strand", "layers");
     if (!layers.IsSequence() || layers.size() == 0) reader_.fail(layers, "strand.layers", "expected a list of layers, core first");
     const std::vector<int> default_directions = default_lay_directions(static_cast<int>(layers.size()));
+    static const std::vector<SettingKey<LayerSpec>> core_keys = [] {
+      std::vector<SettingKey<LayerSpec>> keys;
+      for (const auto& key : layer_key_table())
+        if (key.name != "lay_angle" && key.name != "lay_direction") keys.push_back(key);
+      return keys;
+    }();
     for (std::size_t i = 0; i < layers.size(); ++i) {
       const YAML::Node l = layers[i];
       const std::string path = list_item("strand.layers", i);
       reader_.check_keys(l, path, allowed_keys("strand.layers[i]"));
-      LayerSpec layer;
-      layer.wires = reader_.integer(reader_.require(l, path, "wires"), path + ".wires", 1, kMaxWiresPerLayer);
-      layer.wire_diameter = reader_.positive(reader_.require(l, path, "diameter"), path + ".diameter", "mm");
-      layer.material = reader_.text(reader_.require(l, path, "material"), path + ".material");
-      material(l["material"], path + ".material");
-      if (i == 0) {
-        if (layer.wires != 1) reader_.fail(l["wires"], path + ".wires", "the core (first layer) must have exactly 1 wire");
-        if (l["lay_angle"] || l["lay_direction"]) reader_.fail(l, path, "the core is straight: no lay_angle or lay_direction");
-      } else {
-        const double angle = reader_.number(reader_.require(l, path, "lay_angle"), path + ".lay_angle");
-        if (!(angle > 0 && angle < 90)) reader_.fail(l["lay_angle"], path + ".lay_angle", "expected a lay angle in (0, 90) degrees");
-        layer.lay_angle = angle * kDegree;
-        layer.lay_direction = default_directions[i];
-        if (l["lay_direction"])
-          layer.lay_direction = reader_.choice(l["lay_direction"], path + ".lay_direction", {"right", "left"}) == "right" ? 1 : -1;
-      }
+      if (i == 0 && (l["lay_angle"] || l["lay_direction"])) reader_.fail(l, path, "the core is straight: no lay_angle or lay_direction");
       if (l["start_angle"] && l["start_angles"]) reader_.fail(l, path, "give start_angle or start_angles, not both");
-      if (l["start_angle"]) layer.start_angle = reader_.number(l["start_angle"], path + ".start_angle") * kDegree;
-      if (l["start_angles"])
-        for (double a : reader_.numbers(l["start_angles"], path + ".start_angles", static_cast<std::size_t>(layer.wires)))
-          layer.wire_start_angles.push_back(a * kDegree);
+      LayerSpec layer;
+      layer.lay_direction = default_directions[i];
+      read_setting_keys(reader_, l, path, i == 0 ? core_keys : layer_key_table(), layer);
+      material(l["material"], path + ".material");
+      if (i == 0 && layer.wires != 1) reader_.fail(l["wires"], path + ".wires", "the core (first layer) must have exactly 1 wire");
       spec.layers.push_back(layer);
     }
     // Nominal overlaps: warn for small ones (real strands have them), refuse large ones.
@@ -147,7 +138,7 @@ class CaseParser {
                                                            (spec.layers[i].wire_start_angles.empty() ? "" : " (and start_angles: the closest two wires count)"));
       out_.warnings.push_back(msg.str());
     }
-    out_.end_type = node["ends"] ? reader_.choice(node["ends"], "strand.ends", {"fixed", "free"}) : "fixed";
+    out_.end_type = strand.ends;
     if (mesh) {
       reader_.check_keys(mesh, "mesh", allowed_keys("mesh"));
       if (mesh["element_length"] && mesh["elements_per_wire"])
@@ -167,7 +158,7 @@ class CaseParser {
     out_.model.mesh = std::move(strand_.mesh);
     out_.model.ties = std::move(strand_.ties);
     if (node["clamp_length"]) {
-      const double c = reader_.non_negative(node["clamp_length"], "strand.clamp_length", "mm");
+      const double c = strand.clamp_length;
       if (!(c < 0.5 * spec.length)) reader_.fail(node["clamp_length"], "strand.clamp_length", "expected less than half the strand length");
       if (c > 0) {
         add_rigid_block(out_.model.mesh, strand_.start_node, -1.0, c, out_.model.ties);

@@ -15,8 +15,8 @@ const std::vector<CaseKeyGroup>& case_key_table() {
             "contact"}},
       {"materials.<name>", key_names(material_key_table(), {"plasticity"})},
       {"materials.<name>.plasticity", key_names(plasticity_key_table())},
-      {"strand", {"length", "ends", "clamp_length", "layers"}},
-      {"strand.layers[i]", {"wires", "diameter", "material", "lay_angle", "lay_direction", "start_angle", "start_angles"}},
+      {"strand", key_names(strand_key_table(), {"layers"})},
+      {"strand.layers[i]", key_names(layer_key_table())},
       {"mesh", key_names(mesh_key_table())},
       {"beams[i]", {"name", "material", "section", "shape", "elements"}},
       {"beams[i].section", {"diameter", "area", "inertia_2", "inertia_3", "torsion_constant", "shear_factor"}},
@@ -49,6 +49,8 @@ std::vector<std::string> setting_key_rows(KeySection section) {
   };
   add("materials.<name>", material_key_table());
   add("materials.<name>.plasticity", plasticity_key_table());
+  add("strand", strand_key_table());
+  add("strand.layers[i]", layer_key_table());
   add("mesh", mesh_key_table());
   add("solver", solver_key_table());
   add("contact", contact_key_table());

@@ -29,6 +29,53 @@ const std::vector<SettingKey<BilinearHardening>>& plasticity_key_table() {
   return table;
 }
 
+const std::vector<SettingKey<StrandSettings>>& strand_key_table() {
+  using S = StrandSettings;
+  static const std::vector<SettingKey<S>> table = keys_in_section<S>(KeySection::kPhysics, {
+        number_key("length", &S::length, NumberRange::positive(), "mm", "strand length").must_be_given(),
+        choice_key("ends", &S::ends, {{"fixed", std::string("fixed")}, {"free", std::string("free")}},
+                   "end z = L: axial displacement free (fixed), plus rotation about z (free); end z = 0 clamped"),
+        number_key("clamp_length", &S::clamp_length, NumberRange::non_negative(), "mm",
+                   "every wire's nodes within this length of each end are tied rigidly to the end plane, as a clamp that grips the "
+                   "strand over its jaws")
+            .typed("mm, ≥ 0 and below half the length"),
+    });
+  return table;
+}
+
+const std::vector<SettingKey<LayerSpec>>& layer_key_table() {
+  using L = LayerSpec;
+  static const std::vector<SettingKey<L>> table = [] {
+    auto material = described_key<L>("material", "name", "one of `materials`", "");
+    material.read = [](const YamlReader& reader, const YAML::Node& node, const std::string& path, L& l) { l.material = reader.text(node, path); };
+    material.value = [](const L& l) { return nlohmann::json(l.material); };
+    // Read after `wires`, whose count the list must match.
+    auto start_angles = described_key<L>("start_angles", "list of deg, one per wire",
+                                         "per-wire angular positions at z = 0 (instead of `start_angle`); stacked wires are refused", "");
+    start_angles.read = [](const YamlReader& reader, const YAML::Node& node, const std::string& path, L& l) {
+      l.wire_start_angles.clear();
+      for (double a : reader.numbers(node, path, static_cast<std::size_t>(l.wires))) l.wire_start_angles.push_back(a * kRadiansPerDegree);
+    };
+    start_angles.value = [](const L& l) {
+      if (l.wire_start_angles.empty()) return nlohmann::json(nullptr);
+      nlohmann::json angles = nlohmann::json::array();
+      for (double a : l.wire_start_angles) angles.push_back(a / kRadiansPerDegree);
+      return angles;
+    };
+    return keys_in_section<L>(KeySection::kPhysics, {
+        integer_key("wires", &L::wires, 1, kMaxWiresPerLayer, "layer 0 (the core) has 1").must_be_given(),
+        number_key("diameter", &L::wire_diameter, NumberRange::positive(), "mm", "wire diameter").must_be_given(),
+        std::move(material.must_be_given()),
+        degree_key("lay_angle", &L::lay_angle, NumberRange::open(0, 90), "from the strand axis; not for the core").must_be_given(),
+        choice_key("lay_direction", &L::lay_direction, {{"right", 1}, {"left", -1}}, "not for the core")
+            .default_is("alternating, outer layer right"),
+        degree_key("start_angle", &L::start_angle, NumberRange{}, "angular position of the layer's first wire at z = 0; wires evenly spaced"),
+        std::move(start_angles.default_is("—")),
+    });
+  }();
+  return table;
+}
+
 const std::vector<SettingKey<MeshSpec>>& mesh_key_table() {
   static const std::vector<SettingKey<MeshSpec>> table = keys_in_section<MeshSpec>(KeySection::kPhysics, {
         number_key("element_length", &MeshSpec::element_length, NumberRange::positive(), "mm",

@@ -3,32 +3,20 @@
 #include "strandfem/io/model_keys.hpp"
 #include "strandfem/io/output_keys.hpp"
 
-#include <numbers>
-
 namespace strandfem {
 
 namespace {
-constexpr double kDegree = std::numbers::pi / 180.0;
-
 nlohmann::json resolved_strand(const CaseDefinition& c) {
   const StrandSpec& strand = *c.strand;
   nlohmann::json layers = nlohmann::json::array();
   for (std::size_t i = 0; i < strand.layers.size(); ++i) {
-    const LayerSpec& l = strand.layers[i];
-    nlohmann::json layer = {{"wires", l.wires},
-                            {"diameter", l.wire_diameter},
-                            {"material", l.material},
-                            {"lay_angle", l.lay_angle / kDegree},
-                            {"lay_direction", i == 0 ? "none" : l.lay_direction > 0 ? "right" : "left"},
-                            {"start_angle", l.start_angle / kDegree}};
-    if (!l.wire_start_angles.empty()) {
-      nlohmann::json angles = nlohmann::json::array();
-      for (double a : l.wire_start_angles) angles.push_back(a / kDegree);
-      layer["wire_start_angles"] = angles;
-    }
+    nlohmann::json layer = resolved_setting_keys(layer_key_table(), strand.layers[i]);
+    if (i == 0) layer["lay_direction"] = "none";  // the core is straight
     layers.push_back(layer);
   }
-  return {{"length", strand.length}, {"ends", c.end_type}, {"clamp_length", c.clamp_length}, {"layers", layers}};
+  nlohmann::json resolved = resolved_setting_keys(strand_key_table(), StrandSettings{strand.length, c.end_type, c.clamp_length});
+  resolved["layers"] = layers;
+  return resolved;
 }
 
 nlohmann::json resolved_materials(const StrandSpec& strand) {

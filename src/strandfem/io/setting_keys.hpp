@@ -31,6 +31,8 @@ struct NumberRange {
   std::string text() const;  // "> 0", "≥ 0", "in [0, 1)"
 };
 
+constexpr double kRadiansPerDegree = 0.017453292519943295;  // pi / 180
+
 // How the page writes a number (12 significant digits, exponents without leading zeros: 1e-8, 0.0005, 25).
 std::string number_text(double value);
 
@@ -81,6 +83,23 @@ SettingKey<Settings> number_key(std::string name, double Settings::*member, Numb
     s.*member = v;
   };
   key.value = [member](const Settings& s) { return nlohmann::json(s.*member); };
+  return key;
+}
+
+// An angle the page and the case give in degrees and the settings hold in radians.
+template <class Settings>
+SettingKey<Settings> degree_key(std::string name, double Settings::*member, NumberRange range_in_degrees, std::string meaning,
+                                std::string when_to_touch = {}) {
+  const bool unbounded = range_in_degrees.lower == -kMaxNumberMagnitude && range_in_degrees.upper == kMaxNumberMagnitude;
+  auto key = described_key<Settings>(std::move(name), unbounded ? "deg" : "deg " + range_in_degrees.text(), std::move(meaning),
+                                     std::move(when_to_touch));
+  key.read = [member, range_in_degrees](const YamlReader& reader, const YAML::Node& node, const std::string& path, Settings& s) {
+    const double degrees = reader.number(node, path);
+    if (!range_in_degrees.contains(degrees))
+      reader.fail(node, path, "expected an angle " + range_in_degrees.text() + " degrees, got " + node.Scalar());
+    s.*member = degrees * kRadiansPerDegree;
+  };
+  key.value = [member](const Settings& s) { return nlohmann::json(s.*member / kRadiansPerDegree); };
   return key;
 }
 
