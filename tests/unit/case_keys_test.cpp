@@ -12,6 +12,7 @@
 #include "strandfem/io/case_file.hpp"
 #include "strandfem/io/case_keys.hpp"
 #include "strandfem/io/contact_keys.hpp"
+#include "strandfem/io/load_keys.hpp"
 #include "strandfem/io/model_keys.hpp"
 #include "strandfem/io/output_keys.hpp"
 #include "strandfem/io/solver_keys.hpp"
@@ -98,7 +99,8 @@ TEST(CaseKeys, ThePageWritesEverySettingKeyAsTheReaderDeclaresIt) {
       ++compared;
     }
   EXPECT_EQ(compared, solver_key_table().size() + contact_key_table().size() + output_key_table().size() + material_key_table().size() +
-                          plasticity_key_table().size() + strand_key_table().size() + layer_key_table().size() + mesh_key_table().size());
+                          plasticity_key_table().size() + strand_key_table().size() + layer_key_table().size() + mesh_key_table().size() + step_key_table().size() +
+                          strand_end_load_key_table().size() + transverse_force_key_table().size());
 }
 
 // The defaults the table shows are those a case without the keys runs with.

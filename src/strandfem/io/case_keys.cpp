@@ -1,6 +1,7 @@
 #include "strandfem/io/case_keys.hpp"
 
 #include "strandfem/io/contact_keys.hpp"
+#include "strandfem/io/load_keys.hpp"
 #include "strandfem/io/model_keys.hpp"
 #include "strandfem/io/output_keys.hpp"
 #include "strandfem/io/solver_keys.hpp"
@@ -8,6 +9,14 @@
 #include <stdexcept>
 
 namespace strandfem {
+
+namespace {
+std::vector<const char*> strand_step_keys() {
+  std::vector<const char*> names = key_names(step_key_table());
+  for (const char* name : key_names(strand_end_load_key_table(), {"transverse_force", "forces", "motions"})) names.push_back(name);
+  return names;
+}
+}  // namespace
 
 const std::vector<CaseKeyGroup>& case_key_table() {
   static const std::vector<CaseKeyGroup> table = {
@@ -27,9 +36,9 @@ const std::vector<CaseKeyGroup>& case_key_table() {
       {"selector (strands)", {"core", "core_z"}},
       {"selector (beams)", {"beam", "point", "node", "hub"}},
       {"supports[i]", {"at", "fix"}},
-      {"steps[i]", {"name", "increments", "cycles", "axial_strain", "axial_force", "torque", "twist", "transverse_force", "forces", "motions"}},
-      {"steps[i] (beams)", {"name", "increments", "cycles", "forces", "motions"}},
-      {"steps[i].transverse_force", {"value", "z", "direction", "through", "saddle_length"}},
+      {"steps[i]", strand_step_keys()},
+      {"steps[i] (beams)", key_names(step_key_table(), {"forces", "motions"})},
+      {"steps[i].transverse_force", key_names(transverse_force_key_table())},
       {"steps[i].forces[i]", {"at", "force", "moment"}},
       {"steps[i].motions[i]", {"at", "ux", "uy", "uz", "rx", "ry", "rz"}},
       {"output", key_names(output_key_table(), {"monitor"})},
@@ -52,6 +61,9 @@ std::vector<std::string> setting_key_rows(KeySection section) {
   add("strand", strand_key_table());
   add("strand.layers[i]", layer_key_table());
   add("mesh", mesh_key_table());
+  add("steps[i]", step_key_table());
+  add("steps[i]", strand_end_load_key_table());
+  add("steps[i].transverse_force", transverse_force_key_table());
   add("solver", solver_key_table());
   add("contact", contact_key_table());
   add("output", output_key_table());

@@ -15,6 +15,64 @@ constexpr int kMaxCycles = 10000;
 const char* const kComponentNames[6] = {"ux", "uy", "uz", "rx", "ry", "rz"};
 }  // namespace
 
+const std::vector<SettingKey<LoadStep>>& step_key_table() {
+  static const std::vector<SettingKey<LoadStep>> table = [] {
+    auto name = described_key<LoadStep>("name", "text", "step name in progress lines and results", "");
+    name.read = [](const YamlReader& reader, const YAML::Node& node, const std::string& path, LoadStep& s) { s.name = reader.text(node, path); };
+    name.value = [](const LoadStep& s) { return nlohmann::json(s.name); };
+    return keys_in_section<LoadStep>(KeySection::kPhysics, {
+        std::move(name.default_is("`step1`, `step2`, … by position")),
+        integer_key("increments", &LoadStep::increments, 1, kMaxIncrementsPerStep,
+                    "equal load levels the step reaches (totals at its end); cut increments never step past the next level, so "
+                    "results land on them")
+            .must_be_given(),
+        integer_key("cycles", &LoadStep::cycles, 1, kMaxCycles,
+                    "the step's actions go to their values and back to their totals before the step, this many times, each half in "
+                    "`increments`; actions not listed (the tension) are held. Writes `loops.csv` and `deflection_curves.csv`")
+            .default_is("— (not cyclic)"),
+    });
+  }();
+  return table;
+}
+
+const std::vector<SettingKey<StrandEndLoads>>& strand_end_load_key_table() {
+  using E = StrandEndLoads;
+  static const std::vector<SettingKey<E>> table = keys_in_section<E>(KeySection::kPhysics, {
+        optional_number_key("axial_strain", &E::axial_strain, NumberRange::any(), "−", "strands: imposed strain at the core end z = L (u_z = ε L)"),
+        optional_number_key("axial_force", &E::axial_force, NumberRange::any(), "N", "strands: force at the core end z = L"),
+        optional_number_key("torque", &E::torque, NumberRange::any(), "N·mm", "strands with `ends: free`: moment about z at z = L"),
+        optional_number_key("twist", &E::twist, NumberRange::any(), "deg", "strands with `ends: free`: rotation about z at z = L", kDegree),
+    });
+  return table;
+}
+
+const std::vector<SettingKey<TransverseForceKeys>>& transverse_force_key_table() {
+  using T = TransverseForceKeys;
+  static const std::vector<SettingKey<T>> table = [] {
+    auto direction = described_key<T>("direction", "`[dx, dy, 0]`", "its direction across the strand", "");
+    direction.read = [](const YamlReader& reader, const YAML::Node& node, const std::string& path, T& t) {
+      const auto d = reader.numbers(node, path, 3);
+      const Vec3 v(d[0], d[1], d[2]);
+      if (std::abs(v.z()) > 1e-12 || v.norm() == 0)
+        reader.fail(node, path, "expected a non-zero direction perpendicular to the strand axis (z = 0)");
+      t.direction = v.normalized();
+    };
+    direction.value = [](const T& t) { return nlohmann::json::array({t.direction.x(), t.direction.y(), t.direction.z()}); };
+    return keys_in_section<T>(KeySection::kPhysics, {
+        number_key("value", &T::value, NumberRange::any(), "N", "strands: a force on the core node nearest `z`").must_be_given(),
+        number_key("z", &T::z, NumberRange::any(), "mm", "where").must_be_given(),
+        std::move(direction.default_is("`[0, 1, 0]`")),
+        choice_key("through", &T::through,
+                   {{"core", std::string("core")}, {"section", std::string("section")}, {"saddle", std::string("saddle")}},
+                   "how it reaches the wires: the core node alone (the layers through contact); every wire's node nearest z tied "
+                   "rigidly to it; every node of every wire within `saddle_length` tied to it (a saddle or clamp that grips the strand over a length; "
+                   "the bending references leave that length out of the span)"),
+        optional_number_key("saddle_length", &T::saddle_length, NumberRange::positive(), "mm", "with `through: saddle`"),
+    });
+  }();
+  return table;
+}
+
 void LoadKeys::hold(const Support& support, const std::string& holder) {
   for (int c = 0; c < 6; ++c)
     if (support.fixed[c]) dof_uses_[{support.node, c}].support = holder;
@@ -77,9 +135,8 @@ void LoadKeys::parse_steps(const YAML::Node& node, const StrandModelParts* stran
     else
       reader_.check_keys(s, path, allowed_keys("steps[i] (beams)"));
     LoadStep step;
-    step.name = s["name"] ? reader_.text(s["name"], path + ".name") : "step" + std::to_string(i + 1);
-    step.increments = reader_.integer(reader_.require(s, path, "increments"), path + ".increments", 1, kMaxIncrementsPerStep);
-    if (s["cycles"]) step.cycles = reader_.integer(s["cycles"], path + ".cycles", 1, kMaxCycles);
+    step.name = "step" + std::to_string(i + 1);
+    read_setting_keys(reader_, s, path, step_key_table(), step);
     const int index = static_cast<int>(i);
     if (strand) parse_strand_actions(s, path, index, *strand, step);
     if (s["forces"]) parse_forces(s["forces"], path + ".forces", index, step);
@@ -93,32 +150,32 @@ void LoadKeys::parse_strand_actions(const YAML::Node& s, const std::string& path
                                     LoadStep& step) {
   if (s["axial_strain"] && s["axial_force"]) reader_.fail(s, path, "give axial_strain or axial_force, not both");
   if (s["torque"] && s["twist"]) reader_.fail(s, path, "give torque or twist, not both");
-  if (s["axial_strain"])
-    add_action(step, index, axial_strain_action(strand, reader_.number(s["axial_strain"], path + ".axial_strain"), out_.axial_length),
-               s["axial_strain"], path + ".axial_strain");
-  if (s["axial_force"])
-    add_action(step, index, axial_force_action(strand, reader_.number(s["axial_force"], path + ".axial_force")), s["axial_force"],
-               path + ".axial_force");
-  if (s["torque"] || s["twist"]) {
+  StrandEndLoads loads;
+  read_setting_keys(reader_, s, path, strand_end_load_key_table(), loads);
+  if (loads.axial_strain)
+    add_action(step, index, axial_strain_action(strand, *loads.axial_strain, out_.axial_length), s["axial_strain"], path + ".axial_strain");
+  if (loads.axial_force) add_action(step, index, axial_force_action(strand, *loads.axial_force), s["axial_force"], path + ".axial_force");
+  if (loads.torque || loads.twist) {
     if (out_.end_type == "fixed") reader_.fail(s, path, "torque and twist need strand.ends: free (fixed ends hold the rotation)");
-    if (s["torque"]) add_action(step, index, torque_action(strand, reader_.number(s["torque"], path + ".torque")), s["torque"], path + ".torque");
-    else add_action(step, index, twist_action(strand, reader_.number(s["twist"], path + ".twist") * kDegree), s["twist"], path + ".twist");
+    if (loads.torque) add_action(step, index, torque_action(strand, *loads.torque), s["torque"], path + ".torque");
+    else add_action(step, index, twist_action(strand, *loads.twist), s["twist"], path + ".twist");
   }
   if (s["transverse_force"]) {
     const YAML::Node t = s["transverse_force"];
     const std::string tp = path + ".transverse_force";
     reader_.check_keys(t, tp, allowed_keys("steps[i].transverse_force"));
-    const double value = reader_.number(reader_.require(t, tp, "value"), tp + ".value");
+    TransverseForceKeys keys;
+    read_setting_keys(reader_, t, tp, transverse_force_key_table(), keys);
     YAML::Node selector;
-    selector["core_z"] = reader_.require(t, tp, "z");
-    TransverseLoad load{node_at_(selector, tp), value, Vec3::UnitY()};
+    selector["core_z"] = t["z"];
+    TransverseLoad load{node_at_(selector, tp), keys.value, keys.direction};
     // through: core (the load acts on the core node alone and reaches the other layers through contact), section
     // (every wire's node at that z is tied rigidly to the core node) or saddle (every node within saddle_length).
-    const std::string through = t["through"] ? reader_.choice(t["through"], tp + ".through", {"core", "section", "saddle"}) : "core";
-    if (through == "section") add_rigid_section(out_.model.mesh, load.node, out_.model.ties);
-    if (t["saddle_length"] && through != "saddle") reader_.fail(t["saddle_length"], tp + ".saddle_length", "only with through: saddle");
-    if (through == "saddle") {
-      const double saddle = reader_.positive(reader_.require(t, tp, "saddle_length"), tp + ".saddle_length", "mm");
+    if (keys.through == "section") add_rigid_section(out_.model.mesh, load.node, out_.model.ties);
+    if (keys.saddle_length && keys.through != "saddle") reader_.fail(t["saddle_length"], tp + ".saddle_length", "only with through: saddle");
+    if (keys.through == "saddle") {
+      reader_.require(t, tp, "saddle_length");
+      const double saddle = *keys.saddle_length;
       const double z = out_.model.mesh.nodes[load.node].reference.position.z();
       if (z - 0.5 * saddle <= out_.clamp_length || z + 0.5 * saddle >= out_.axial_length - out_.clamp_length)
         reader_.fail(t["saddle_length"], tp + ".saddle_length", "the saddle reaches the clamps: expected it to lie between them");
@@ -126,13 +183,6 @@ void LoadKeys::parse_strand_actions(const YAML::Node& s, const std::string& path
         reader_.fail(t["saddle_length"], tp + ".saddle_length", "one saddle per strand: every step's must be the same");
       add_rigid_block(out_.model.mesh, load.node, z - 0.5 * saddle, z + 0.5 * saddle, out_.model.ties);
       out_.saddle_length = saddle;
-    }
-    if (t["direction"]) {
-      const auto d = reader_.numbers(t["direction"], tp + ".direction", 3);
-      load.direction = Vec3(d[0], d[1], d[2]);
-      if (std::abs(load.direction.z()) > 1e-12 || load.direction.norm() == 0)
-        reader_.fail(t["direction"], tp + ".direction", "expected a non-zero direction perpendicular to the strand axis (z = 0)");
-      load.direction.normalize();
     }
     for (const NodalAction& a : transverse_actions(load)) add_action(step, index, a, t, tp);
   }

@@ -3,14 +3,37 @@
 #pragma once
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "strandfem/analysis/strand_builder.hpp"
 #include "strandfem/io/case_file.hpp"
+#include "strandfem/io/setting_keys.hpp"
 #include "strandfem/io/yaml_reader.hpp"
 
 namespace strandfem {
+
+// A strand step's loads at the core end z = L as the case gives them (the twist held in radians).
+struct StrandEndLoads {
+  std::optional<double> axial_strain, axial_force, torque, twist;
+};
+
+// A step's transverse force on a strand as the case gives it.
+struct TransverseForceKeys {
+  double value = 0;                // N
+  double z = 0;                    // mm: the core node nearest it
+  Vec3 direction = Vec3::UnitY();  // unit, across the strand
+  std::string through = "core";    // core | section | saddle
+  std::optional<double> saddle_length;  // mm, with through: saddle
+};
+
+// The keys of `steps[i]` (name, increments, cycles; strands also the end loads) and `steps[i].transverse_force`.
+// Which loads exclude each other, and what needs free ends or a saddle: the reader checks.
+const std::vector<SettingKey<LoadStep>>& step_key_table();
+const std::vector<SettingKey<StrandEndLoads>>& strand_end_load_key_table();
+const std::vector<SettingKey<TransverseForceKeys>>& transverse_force_key_table();
 
 class LoadKeys {
  public:

@@ -1,5 +1,6 @@
 #include "strandfem/io/resolved_configuration.hpp"
 
+#include "strandfem/io/load_keys.hpp"
 #include "strandfem/io/model_keys.hpp"
 #include "strandfem/io/output_keys.hpp"
 
@@ -38,7 +39,7 @@ void add_resolved_model(const CaseDefinition& c, nlohmann::json& resolved) {
   resolved["mesh"] = {{"element_length", c.mesh_spec.elements_per_wire > 0 ? nlohmann::json(nullptr) : nlohmann::json(c.mesh_spec.element_length)},
                       {"elements_per_wire", c.mesh_spec.elements_per_wire > 0 ? nlohmann::json(c.mesh_spec.elements_per_wire) : nlohmann::json(nullptr)}};
   nlohmann::json steps = nlohmann::json::array();
-  for (const LoadStep& s : c.model.steps) steps.push_back({{"name", s.name}, {"increments", s.increments}, {"cycles", s.cycles}});
+  for (const LoadStep& s : c.model.steps) steps.push_back(resolved_setting_keys(step_key_table(), s));
   resolved["steps"] = steps;
   resolved["output"] = resolved_setting_keys(output_key_table(), c.output);
 }

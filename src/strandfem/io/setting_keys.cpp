@@ -16,6 +16,13 @@ std::string NumberRange::text() const {
   return std::string("in ") + (lower_open ? "(" : "[") + number_text(lower) + ", " + number_text(upper) + (upper_open ? ")" : "]");
 }
 
+std::string number_type_text(const NumberRange& range, const std::string& unit) {
+  if (range.unbounded()) return unit.empty() ? "number" : unit;
+  const std::string text = range.text();
+  if (unit.empty()) return text;
+  return unit + (text.rfind("in ", 0) == 0 ? " " : ", ") + text;
+}
+
 std::string number_text(double value) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.12g", value);

@@ -3,6 +3,7 @@
 #pragma once
 #include <functional>
 #include <limits>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <utility>
@@ -26,12 +27,18 @@ struct NumberRange {
   static NumberRange open(double lower, double upper) { return {lower, upper, true, true}; }
   static NumberRange half_open(double lower, double upper) { return {lower, upper, false, true}; }  // [lower, upper)
   static NumberRange below(double upper) { return {0.0, upper, true, true}; }                       // (0, upper)
+  static NumberRange any() { return {}; }
+
+  bool unbounded() const { return lower <= -kMaxNumberMagnitude && upper >= kMaxNumberMagnitude; }
 
   bool contains(double value) const;
   std::string text() const;  // "> 0", "≥ 0", "in [0, 1)"
 };
 
 constexpr double kRadiansPerDegree = 0.017453292519943295;  // pi / 180
+
+// A number's type as the page writes it: its unit, then its range ("mm, > 0", "deg in (0, 90)", "N").
+std::string number_type_text(const NumberRange& range, const std::string& unit);
 
 // How the page writes a number (12 significant digits, exponents without leading zeros: 1e-8, 0.0005, 25).
 std::string number_text(double value);
@@ -71,9 +78,7 @@ SettingKey<Settings> described_key(std::string name, std::string type, std::stri
 template <class Settings>
 SettingKey<Settings> number_key(std::string name, double Settings::*member, NumberRange range, const std::string& unit,
                                 std::string meaning, std::string when_to_touch = {}) {
-  std::string type = range.text();
-  if (!unit.empty()) type = unit + (type.rfind("in ", 0) == 0 ? " " : ", ") + type;
-  auto key = described_key<Settings>(std::move(name), std::move(type), std::move(meaning), std::move(when_to_touch));
+  auto key = described_key<Settings>(std::move(name), number_type_text(range, unit), std::move(meaning), std::move(when_to_touch));
   key.read = [member, range, unit](const YamlReader& reader, const YAML::Node& node, const std::string& path, Settings& s) {
     const char* shown_unit = unit.empty() ? "-" : unit.c_str();
     const double v = range.lower != 0 ? reader.number(node, path)
@@ -90,9 +95,7 @@ SettingKey<Settings> number_key(std::string name, double Settings::*member, Numb
 template <class Settings>
 SettingKey<Settings> degree_key(std::string name, double Settings::*member, NumberRange range_in_degrees, std::string meaning,
                                 std::string when_to_touch = {}) {
-  const bool unbounded = range_in_degrees.lower == -kMaxNumberMagnitude && range_in_degrees.upper == kMaxNumberMagnitude;
-  auto key = described_key<Settings>(std::move(name), unbounded ? "deg" : "deg " + range_in_degrees.text(), std::move(meaning),
-                                     std::move(when_to_touch));
+  auto key = described_key<Settings>(std::move(name), number_type_text(range_in_degrees, "deg"), std::move(meaning), std::move(when_to_touch));
   key.read = [member, range_in_degrees](const YamlReader& reader, const YAML::Node& node, const std::string& path, Settings& s) {
     const double degrees = reader.number(node, path);
     if (!range_in_degrees.contains(degrees))
@@ -100,6 +103,22 @@ SettingKey<Settings> degree_key(std::string name, double Settings::*member, Numb
     s.*member = degrees * kRadiansPerDegree;
   };
   key.value = [member](const Settings& s) { return nlohmann::json(s.*member / kRadiansPerDegree); };
+  return key;
+}
+
+// A number a mapping may leave out (null in the resolved configuration), read in `unit` and held times `scale`
+// (degrees held in radians: kRadiansPerDegree).
+template <class Settings>
+SettingKey<Settings> optional_number_key(std::string name, std::optional<double> Settings::*member, NumberRange range, const std::string& unit,
+                                         std::string meaning, double scale = 1.0) {
+  auto key = described_key<Settings>(std::move(name), number_type_text(range, unit), std::move(meaning), "");
+  key.read = [member, range, scale](const YamlReader& reader, const YAML::Node& node, const std::string& path, Settings& s) {
+    const double v = reader.number(node, path);
+    if (!range.contains(v)) reader.fail(node, path, "expected a value " + range.text() + ", got " + node.Scalar());
+    s.*member = v * scale;
+  };
+  key.value = [member, scale](const Settings& s) { return s.*member ? nlohmann::json(*(s.*member) / scale) : nlohmann::json(nullptr); };
+  key.default_rule = "—";
   return key;
 }
 
