@@ -263,7 +263,7 @@ int main(int argc, char** argv) {
   sweep->add_flag("-q,--quiet", quiet, "No progress lines");
   auto* info = app.add_subcommand("info", "Print model sizes and analytic references as JSON, without solving");
   info->add_option("case", case_path, "Case file (YAML)")->required();
-  auto* keys = app.add_subcommand("keys", "Print the material, mesh, contact, solver and output keys with type, range, default and meaning (docs/case-files.md)");
+  auto* keys = app.add_subcommand("keys", "Print every case-file key with type, range, default and meaning (the rows of docs/case-files.md)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -9,6 +9,7 @@
 #include <set>
 #include <string>
 
+#include "strandfem/io/beam_keys.hpp"
 #include "strandfem/io/case_file.hpp"
 #include "strandfem/io/case_keys.hpp"
 #include "strandfem/io/contact_keys.hpp"
@@ -80,7 +81,7 @@ std::map<std::string, std::string> documented_rows(const std::string& page) {
   std::map<std::string, std::string> rows;
   std::ifstream in(page);
   std::string line;
-  const std::regex row("^\\| `([A-Za-z_.<>\\[\\]]+)` \\|");
+  const std::regex row("^\\| `([A-Za-z0-9_.<>\\[\\]]+)` \\|");
   std::smatch match;
   while (std::getline(in, line))
     if (std::regex_search(line, match, row)) rows[match[1]] = line;
@@ -99,8 +100,11 @@ TEST(CaseKeys, ThePageWritesEverySettingKeyAsTheReaderDeclaresIt) {
       ++compared;
     }
   EXPECT_EQ(compared, solver_key_table().size() + contact_key_table().size() + output_key_table().size() + material_key_table().size() +
-                          plasticity_key_table().size() + strand_key_table().size() + layer_key_table().size() + mesh_key_table().size() + step_key_table().size() +
-                          strand_end_load_key_table().size() + transverse_force_key_table().size());
+                          plasticity_key_table().size() + friction_pair_key_table().size() + friction_zone_key_table().size() + strand_key_table().size() + layer_key_table().size() + mesh_key_table().size() + step_key_table().size() +
+                          strand_end_load_key_table().size() + transverse_force_key_table().size() + beam_key_table().size() +
+                          section_key_table().size() + shape_key_table().size() + hub_key_table().size() + support_key_table().size() +
+                          force_key_table().size() + motion_key_table().size() + strand_selector_key_table().size() +
+                          beam_selector_key_table().size() + case_heading_key_table().size() + monitor_key_table().size());
 }
 
 // The defaults the table shows are those a case without the keys runs with.

@@ -1,5 +1,6 @@
 #include "strandfem/io/case_file.hpp"
 
+#include "strandfem/io/beam_keys.hpp"
 #include "strandfem/io/case_keys.hpp"
 #include "strandfem/io/contact_keys.hpp"
 #include "strandfem/io/resolved_configuration.hpp"
@@ -32,7 +33,9 @@ class CaseParser {
 
   void parse(const YAML::Node& root) {
     reader_.check_keys(root, "", allowed_keys(""));
-    out_.title = root["title"] ? reader_.text(root["title"], "title") : "untitled";
+    CaseHeading heading;
+    read_setting_keys(reader_, root, "", case_heading_key_table(), heading);
+    out_.title = heading.title;
     parse_materials(reader_.require(root, "", "materials"));
     const bool has_strand = root["strand"].IsDefined(), has_beams = root["beams"].IsDefined();
     if (has_strand == has_beams) reader_.fail(root, "strand/beams", "expected exactly one of 'strand' or 'beams'");
@@ -182,26 +185,31 @@ class CaseParser {
       const YAML::Node b = node[i];
       const std::string path = list_item("beams", i);
       reader_.check_keys(b, path, allowed_keys("beams[i]"));
+      BeamKeys keys;
+      read_setting_keys(reader_, b, path, beam_key_table(), keys);
       BeamLineSpec line;
-      line.name = reader_.text(reader_.require(b, path, "name"), path + ".name");
+      line.name = keys.name;
       for (const MeshWire& w : out_.model.mesh.wires)
         if (w.name == line.name) reader_.fail(b["name"], path + ".name", "duplicate beam name '" + line.name + "'");
-      const Material& mat = material(reader_.require(b, path, "material"), path + ".material");
+      const Material& mat = material(b["material"], path + ".material");
       const YAML::Node s = reader_.require(b, path, "section");
-      reader_.check_keys(s, path + ".section", allowed_keys("beams[i].section"));
+      const std::string sp = path + ".section";
+      reader_.check_keys(s, sp, allowed_keys("beams[i].section"));
+      SectionKeys section;
+      read_setting_keys(reader_, s, sp, section_key_table(), section);
       SectionGeometry geometry;
-      if (s["diameter"]) {
-        if (s.size() != 1) reader_.fail(s, path + ".section", "a circular section takes only 'diameter'");
-        geometry = SectionGeometry::circle(reader_.positive(s["diameter"], path + ".section.diameter", "mm"), mat.poisson_ratio);
+      if (section.diameter) {
+        if (s.size() != 1) reader_.fail(s, sp, "a circular section takes only 'diameter'");
+        geometry = SectionGeometry::circle(*section.diameter, mat.poisson_ratio);
       } else {
-        const std::string sp = path + ".section";
-        geometry.area = reader_.positive(reader_.require(s, sp, "area"), sp + ".area", "mm^2");
-        geometry.inertia_2 = reader_.positive(reader_.require(s, sp, "inertia_2"), sp + ".inertia_2", "mm^4");
-        geometry.inertia_3 = reader_.positive(reader_.require(s, sp, "inertia_3"), sp + ".inertia_3", "mm^4");
-        geometry.torsion_constant = reader_.positive(reader_.require(s, sp, "torsion_constant"), sp + ".torsion_constant", "mm^4");
-        geometry.shear_factor = reader_.positive(reader_.require(s, sp, "shear_factor"), sp + ".shear_factor", "-");
+        for (const char* key : {"area", "inertia_2", "inertia_3", "torsion_constant", "shear_factor"}) reader_.require(s, sp, key);
+        geometry.area = section.area;
+        geometry.inertia_2 = section.inertia_2;
+        geometry.inertia_3 = section.inertia_3;
+        geometry.torsion_constant = section.torsion_constant;
+        geometry.shear_factor = section.shear_factor;
       }
-      line.elements = reader_.integer(reader_.require(b, path, "elements"), path + ".elements", 1, kMaxElementsPerLine);
+      line.elements = keys.elements;
       parse_shape(reader_.require(b, path, "shape"), path + ".shape", line);
       Mesh& m = out_.model.mesh;
       if (mat.plasticity && !s["diameter"])
@@ -226,15 +234,16 @@ class CaseParser {
     for (std::size_t i = 0; i < node.size(); ++i) {
       const std::string path = list_item("hubs", i);
       reader_.check_keys(node[i], path, allowed_keys("hubs[i]"));
-      const std::string name = reader_.text(reader_.require(node[i], path, "name"), path + ".name");
+      HubKeys keys;
+      read_setting_keys(reader_, node[i], path, hub_key_table(), keys);
+      const std::string& name = keys.name;
       if (hubs_.count(name)) reader_.fail(node[i]["name"], path + ".name", "duplicate hub name '" + name + "'");
-      const auto p = reader_.numbers(reader_.require(node[i], path, "position"), path + ".position", 3);
       MeshNode hub;
-      hub.reference.position = Vec3(p[0], p[1], p[2]);
+      hub.reference.position = keys.position;
       const int hub_node = static_cast<int>(m.nodes.size());
       m.nodes.push_back(hub);
       hubs_[name] = hub_node;
-      const YAML::Node links = reader_.require(node[i], path, "links");
+      const YAML::Node links = keys.links;
       if (!links.IsSequence() || links.size() == 0) reader_.fail(links, path + ".links", "expected a list of beam node selectors");
       for (std::size_t k = 0; k < links.size(); ++k) {
         // {beam: name} alone links every node of the line (a rigid line); otherwise one node selector.
@@ -257,49 +266,29 @@ class CaseParser {
 
   void parse_shape(const YAML::Node& s, const std::string& path, BeamLineSpec& line) {
     const std::string type = reader_.choice(reader_.require(s, path, "type"), path + ".type", {"straight", "arc", "helix"});
-    auto vec = [&](const char* key) {
-      const auto v = reader_.numbers(reader_.require(s, path, key), path + "." + key, 3);
-      return Vec3(v[0], v[1], v[2]);
-    };
-    if (type == "straight") {
-      reader_.check_keys(s, path, allowed_keys("beams[i].shape (straight)"));
-      line.shape = BeamLineSpec::kStraight;
-      line.start = vec("start");
-      line.end = vec("end");
-      if ((line.end - line.start).norm() <= 0) reader_.fail(s, path, "start and end coincide");
-      if (s["normal"]) line.normal = vec("normal");
-    } else if (type == "arc") {
-      reader_.check_keys(s, path, allowed_keys("beams[i].shape (arc)"));
-      line.shape = BeamLineSpec::kArc;
-      line.center = vec("center");
-      line.radius = reader_.positive(reader_.require(s, path, "radius"), path + ".radius", "mm");
-      line.start_angle = reader_.number(reader_.require(s, path, "start_angle"), path + ".start_angle") * kDegree;
-      line.end_angle = reader_.number(reader_.require(s, path, "end_angle"), path + ".end_angle") * kDegree;
-      if (s["axis"]) line.axis = vec("axis");
-      if (line.start_angle == line.end_angle) reader_.fail(s, path, "start_angle equals end_angle");
-    } else {
-      reader_.check_keys(s, path, allowed_keys("beams[i].shape (helix)"));
-      line.shape = BeamLineSpec::kHelix;
-      line.radius = reader_.positive(reader_.require(s, path, "radius"), path + ".radius", "mm");
-      const double angle = reader_.number(reader_.require(s, path, "lay_angle"), path + ".lay_angle");
-      if (!(angle > 0 && angle < 90)) reader_.fail(s["lay_angle"], path + ".lay_angle", "expected a lay angle in (0, 90) degrees");
-      line.lay_angle = angle * kDegree;
-      line.length = reader_.positive(reader_.require(s, path, "length"), path + ".length", "mm");
-      if (s["lay_direction"]) line.lay_direction = reader_.choice(s["lay_direction"], path + ".lay_direction", {"right", "left"}) == "right" ? 1 : -1;
-      if (s["start_angle"]) line.start_angle = reader_.number(s["start_angle"], path + ".start_angle") * kDegree;
+    for (const ShapeKind& kind : shape_kinds()) {
+      if (type != kind.type) continue;
+      reader_.check_keys(s, path, allowed_keys(std::string("beams[i].shape (") + kind.type + ")"));
+      for (const char* key : kind.required) reader_.require(s, path, key);
     }
+    read_setting_keys(reader_, s, path, shape_key_table(), line);
+    if (line.shape == BeamLineSpec::kStraight && (line.end - line.start).norm() <= 0) reader_.fail(s, path, "start and end coincide");
+    if (line.shape == BeamLineSpec::kArc && line.start_angle == line.end_angle) reader_.fail(s, path, "start_angle equals end_angle");
   }
 
   // Node selectors: {core: start|end}, {core_z: z} for strands; {beam: name, point: start|middle|end} or
   // {beam: name, node: k} for beam lines.
   int node_at(const YAML::Node& n, const std::string& path) {
     const Mesh& m = out_.model.mesh;
+    SelectorKeys selector;
     if (out_.strand) {
       reader_.check_keys(n, path, allowed_keys("selector (strands)"));
       if (n["core"] && n["core_z"]) reader_.fail(n, path, "give core or core_z, not both");
+      read_setting_keys(reader_, n, path, strand_selector_key_table(), selector);
       const MeshWire& core = m.wires[0];
-      if (n["core"]) return reader_.choice(n["core"], path + ".core", {"start", "end"}) == "start" ? core.nodes.front() : core.nodes.back();
-      const double z = reader_.number(reader_.require(n, path, "core_z"), path + ".core_z");
+      if (!selector.core.empty()) return selector.core == "start" ? core.nodes.front() : core.nodes.back();
+      reader_.require(n, path, "core_z");
+      const double z = *selector.core_z;
       if (z < 0 || z > out_.strand->length) reader_.fail(n["core_z"], path + ".core_z", "expected a position within the strand length");
       int best = core.nodes.front();
       for (const int node : core.nodes)
@@ -307,30 +296,29 @@ class CaseParser {
       return best;
     }
     reader_.check_keys(n, path, allowed_keys("selector (beams)"));
-    if (n["hub"]) {
-      const std::string hub = reader_.text(n["hub"], path + ".hub");
-      if (!hubs_.count(hub)) reader_.fail(n["hub"], path + ".hub", "no hub named '" + hub + "'");
+    read_setting_keys(reader_, n, path, beam_selector_key_table(), selector);
+    if (!selector.hub.empty()) {
+      if (!hubs_.count(selector.hub)) reader_.fail(n["hub"], path + ".hub", "no hub named '" + selector.hub + "'");
       if (n.size() != 1) reader_.fail(n, path, "a hub selector takes only 'hub'");
-      return hubs_.at(hub);
+      return hubs_.at(selector.hub);
     }
-    const std::string name = reader_.text(reader_.require(n, path, "beam"), path + ".beam");
+    reader_.require(n, path, "beam");
     if (n["node"] && n["point"]) reader_.fail(n, path, "give point or node, not both");
     for (const MeshWire& w : m.wires) {
-      if (w.name != name) continue;
-      if (n["node"]) {
-        const int k = reader_.integer(n["node"], path + ".node", 0, 2 * kMaxElementsPerLine);
-        if (k >= static_cast<int>(w.nodes.size())) reader_.fail(n["node"], path + ".node", "beyond the line's last node " + std::to_string(w.nodes.size() - 1));
-        return w.nodes[k];
+      if (w.name != selector.beam) continue;
+      if (selector.node) {
+        if (*selector.node >= static_cast<int>(w.nodes.size()))
+          reader_.fail(n["node"], path + ".node", "beyond the line's last node " + std::to_string(w.nodes.size() - 1));
+        return w.nodes[*selector.node];
       }
-      const std::string p = reader_.choice(reader_.require(n, path, "point"), path + ".point", {"start", "middle", "end"});
-      return p == "start" ? w.nodes.front() : p == "end" ? w.nodes.back() : w.nodes[w.nodes.size() / 2];
+      reader_.require(n, path, "point");
+      return selector.point == "start" ? w.nodes.front() : selector.point == "end" ? w.nodes.back() : w.nodes[w.nodes.size() / 2];
     }
-    reader_.fail(n["beam"], path + ".beam", "no beam named '" + name + "'");
+    reader_.fail(n["beam"], path + ".beam", "no beam named '" + selector.beam + "'");
   }
 
   void parse_output(const YAML::Node& node) {
-    static const std::vector<const char*> names = key_names(output_key_table(), {"monitor"});
-    reader_.check_keys(node, "output", names);
+    reader_.check_keys(node, "output", allowed_keys("output"));
     read_setting_keys(reader_, node, "output", output_key_table(), out_.output);
     if (const YAML::Node offset = node["clamp_edge_offset"]) {
       if (!out_.strand) reader_.fail(offset, "output.clamp_edge_offset", "only strands have clamps");
@@ -338,7 +326,9 @@ class CaseParser {
         reader_.fail(offset, "output.clamp_edge_offset",
                      fmt::format("expected a distance below half the strand length ({} mm)", 0.5 * out_.axial_length));
     }
-    if (node["monitor"]) out_.monitor_node = node_at(node["monitor"], "output.monitor");
+    MonitorKey monitor;
+    read_setting_keys(reader_, node, "output", monitor_key_table(), monitor);
+    if (node["monitor"]) out_.monitor_node = node_at(monitor.monitor, "output.monitor");
   }
 
   YamlReader reader_;

@@ -19,11 +19,24 @@ struct CaseKeyGroup {
 
 const std::vector<CaseKeyGroup>& case_key_table();
 
+// The top level's own values (its other keys are the mappings of the table).
+struct CaseHeading {
+  std::string title = "untitled";
+  YAML::Node description, expected;  // free-form; the program ignores them
+};
+const std::vector<SettingKey<CaseHeading>>& case_heading_key_table();
+
+// `output.monitor`: a node selector, resolved with the case's nodes.
+struct MonitorKey {
+  YAML::Node monitor;
+};
+const std::vector<SettingKey<MonitorKey>>& monitor_key_table();
+
 // The keys of one mapping of the table; std::logic_error for a mapping the table does not have (a bug).
 const std::vector<const char*>& allowed_keys(const std::string& mapping);
 
-// The rows of docs/case-files.md for the keys declared with their type, range and default (materials, plasticity,
-// mesh, the scalar contact keys, solver, output but `monitor`) in one section of the page, in the tables' order.
+// The rows of docs/case-files.md in one section of the page: every key declared with its type, range and default,
+// in the tables' order.
 std::vector<std::string> setting_key_rows(KeySection section);
 
 }  // namespace strandfem

@@ -41,6 +41,9 @@ const std::vector<SettingKey<ContactSettings>>& contact_key_table() {
                    "what direction 1 of an orthotropic point follows on the contact plane: the strand axis (section 5.3's text), or "
                    "the slave wire's tangent (the x axis of the paper's CONTA176 elements; the slave is the inner wire at a crossing)")
             .in_section(kPhysics),
+        vector_key("axis", &S::strand_axis, "`[x, y, z]`", "beam cases: the \"strand axis\" of friction direction 1")
+            .in_section(kPhysics)
+            .default_is("`[0, 0, 1]`"),
         number_key("normal_factor", &S::normal_factor, NumberRange::positive(), "", "fKn of eq. 2.5",
                    "to check that a result does not depend on the penalty (a stiffer one moves the bending curve by < 1.5 %, "
                    "docs/validation.md)"),
@@ -116,37 +119,69 @@ const std::vector<SettingKey<ContactSettings>>& contact_key_table() {
   return table;
 }
 
+const std::vector<SettingKey<FrictionPairKeys>>& friction_pair_key_table() {
+  using P = FrictionPairKeys;
+  static const std::vector<SettingKey<P>> table = keys_in_section<P>(KeySection::kPhysics, {
+        node_key("materials", &P::materials, "`[a, b]`", "a material pair (order free)").must_be_given(),
+        optional_number_key("mu", &P::mu, kFrictionRange, "μ", "its coefficient, over `contact.friction`"),
+        optional_number_key("orthotropy_ratio", &P::orthotropy_ratio, NumberRange::positive(), "", "its μ2/μ1, over `contact.orthotropy_ratio`"),
+        choice_key("contacts", &P::contacts, {{"lateral", std::string("lateral")}, {"radial", std::string("radial")}},
+                   "the only interface the entry applies to; the first entry that applies and sets the value wins")
+            .default_is("both"),
+    });
+  return table;
+}
+
+const std::vector<SettingKey<FrictionZoneKeys>>& friction_zone_key_table() {
+  using Z = FrictionZoneKeys;
+  static const std::vector<SettingKey<Z>> table = [] {
+    auto z = described_key<Z>("z", "`[z_min, z_max]` mm", "an axial band (the multi-level model, section 5.2), over pairs; first match wins", "");
+    z.read = [](const YamlReader& reader, const YAML::Node& node, const std::string& path, Z& zone) {
+      const auto band = reader.numbers(node, path, 2);
+      if (!(band[1] > band[0])) reader.fail(node, path, "expected [z_min, z_max] with z_max > z_min (mm)");
+      zone.z_min = band[0];
+      zone.z_max = band[1];
+    };
+    z.value = [](const Z& zone) { return nlohmann::json::array({zone.z_min, zone.z_max}); };
+    return keys_in_section<Z>(KeySection::kPhysics, {
+        std::move(z.must_be_given()),
+        number_key("mu", &Z::mu, kFrictionRange, "μ", "its coefficient").must_be_given(),
+        node_key("materials", &Z::materials, "list of pairs",
+                 "the material pairs it applies to, e.g. `[[aluminum, aluminum], [aluminum, steel]]`")
+            .default_is("all"),
+        choice_key("contacts", &Z::contacts, {{"lateral", std::string("lateral")}, {"radial", std::string("radial")}},
+                   "the interface it applies to (section 5.2 changes the radial contacts)")
+            .default_is("both"),
+    });
+  }();
+  return table;
+}
+
 ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Node& node,
                                        const std::map<std::string, Material>& materials, bool strand) {
-  static const std::vector<const char*> names = key_names(contact_key_table(), {"friction_pairs", "friction_zones", "axis"});
+  static const std::vector<const char*> names = key_names(contact_key_table(), {"friction_pairs", "friction_zones"});
   reader.check_keys(node, "contact", names);
   ContactSettings c;
   c.enabled = true;
   read_setting_keys(reader, node, "contact", contact_key_table(), c);
-  auto friction = [&](const YAML::Node& n, const std::string& path) {
-    const double mu = reader.number(n, path);
-    if (!kFrictionRange.contains(mu)) reader.fail(n, path, "expected a friction coefficient " + kFrictionRange.text() + ", got " + n.Scalar());
-    return mu;
-  };
   // The interface an entry is limited to (paper section 2.2): none, lateral or radial contacts alone.
-  auto interface = [&](const YAML::Node& entry, const std::string& path) -> std::optional<ContactInterface> {
-    const YAML::Node n = entry["contacts"];
-    if (!n) return std::nullopt;
-    return reader.choice(n, path + ".contacts", {"lateral", "radial"}) == "radial" ? ContactInterface::kRadial
-                                                                                 : ContactInterface::kLateral;
+  const auto interface = [](const std::string& contacts) -> std::optional<ContactInterface> {
+    if (contacts.empty()) return std::nullopt;
+    return contacts == "radial" ? ContactInterface::kRadial : ContactInterface::kLateral;
   };
   if (const YAML::Node pairs = node["friction_pairs"]) {
     if (!pairs.IsSequence()) reader.fail(pairs, "contact.friction_pairs", "expected a list of {materials: [a, b], mu}");
     for (std::size_t i = 0; i < pairs.size(); ++i) {
       const std::string path = list_item("contact.friction_pairs", i);
       reader.check_keys(pairs[i], path, allowed_keys("contact.friction_pairs[i]"));
+      FrictionPairKeys keys;
+      read_setting_keys(reader, pairs[i], path, friction_pair_key_table(), keys);
       MaterialPairFriction f;
-      std::tie(f.material_a, f.material_b) =
-          material_pair(reader, reader.require(pairs[i], path, "materials"), path + ".materials", materials, "expected two material names");
-      if (pairs[i]["mu"]) f.coefficient = friction(pairs[i]["mu"], path + ".mu");
-      if (pairs[i]["orthotropy_ratio"]) f.orthotropy_ratio = reader.positive(pairs[i]["orthotropy_ratio"], path + ".orthotropy_ratio", "-");
+      std::tie(f.material_a, f.material_b) = material_pair(reader, keys.materials, path + ".materials", materials, "expected two material names");
+      f.coefficient = keys.mu;
+      f.orthotropy_ratio = keys.orthotropy_ratio;
       if (!f.coefficient && !f.orthotropy_ratio) reader.fail(pairs[i], path, "expected 'mu', 'orthotropy_ratio' or both");
-      f.interface = interface(pairs[i], path);
+      f.interface = interface(keys.contacts);
       c.pair_friction.push_back(f);
     }
   }
@@ -155,10 +190,11 @@ ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Nod
     for (std::size_t i = 0; i < zones.size(); ++i) {
       const std::string path = list_item("contact.friction_zones", i);
       reader.check_keys(zones[i], path, allowed_keys("contact.friction_zones[i]"));
-      const auto z = reader.numbers(reader.require(zones[i], path, "z"), path + ".z", 2);
-      if (!(z[1] > z[0])) reader.fail(zones[i]["z"], path + ".z", "expected [z_min, z_max] with z_max > z_min (mm)");
-      FrictionZone zone{z[0], z[1], friction(reader.require(zones[i], path, "mu"), path + ".mu"), {}, interface(zones[i], path)};
-      if (const YAML::Node pairs = zones[i]["materials"]) {
+      FrictionZoneKeys keys;
+      read_setting_keys(reader, zones[i], path, friction_zone_key_table(), keys);
+      FrictionZone zone{keys.z_min, keys.z_max, keys.mu, {}, interface(keys.contacts)};
+      if (zones[i]["materials"]) {
+        const YAML::Node pairs = keys.materials;
         const std::string expected = "expected a list of material pairs, e.g. [[aluminum, aluminum], [aluminum, steel]]";
         if (!pairs.IsSequence() || pairs.size() == 0) reader.fail(pairs, path + ".materials", expected);
         for (std::size_t k = 0; k < pairs.size(); ++k)
@@ -169,8 +205,6 @@ ContactSettings parse_contact_settings(const YamlReader& reader, const YAML::Nod
   }
   if (node["axis"]) {
     if (strand) reader.fail(node["axis"], "contact.axis", "strands use their own axis (z); 'axis' is for beam cases");
-    const auto a = reader.numbers(node["axis"], "contact.axis", 3);
-    c.strand_axis = Vec3(a[0], a[1], a[2]);
     if (!(c.strand_axis.norm() > 0)) reader.fail(node["axis"], "contact.axis", "expected a nonzero direction");
   }
   return c;

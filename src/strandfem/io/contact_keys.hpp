@@ -2,6 +2,7 @@
 #pragma once
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "strandfem/beam/section.hpp"
@@ -11,9 +12,25 @@
 
 namespace strandfem {
 
-// The scalar keys of `contact:`, each with its type, range, default and meaning; `friction_pairs`,
-// `friction_zones` and `axis` are read by parse_contact_settings itself.
+// The keys of `contact:`, each with its type, range, default and meaning; its two lists have tables of their own.
 const std::vector<SettingKey<ContactSettings>>& contact_key_table();
+
+// An entry of `contact.friction_pairs` as the case gives it; the materials must be two of `materials`.
+struct FrictionPairKeys {
+  YAML::Node materials;
+  std::optional<double> mu, orthotropy_ratio;
+  std::string contacts;  // lateral | radial; empty: both
+};
+const std::vector<SettingKey<FrictionPairKeys>>& friction_pair_key_table();
+
+// An entry of `contact.friction_zones`.
+struct FrictionZoneKeys {
+  double z_min = 0, z_max = 0;  // mm
+  double mu = 0;
+  YAML::Node materials;  // a list of material pairs, where the entry gives it (else all)
+  std::string contacts;  // lateral | radial; empty: both
+};
+const std::vector<SettingKey<FrictionZoneKeys>>& friction_zone_key_table();
 
 // Reads and validates `contact:` (docs/case-files.md); `strand`: the case is a strand (no `axis` key).
 // Throws CaseError naming the key.

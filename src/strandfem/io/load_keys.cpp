@@ -3,6 +3,7 @@
 #include "strandfem/io/case_keys.hpp"
 
 #include <cmath>
+#include <tuple>
 #include <numbers>
 
 namespace strandfem {
@@ -73,6 +74,65 @@ const std::vector<SettingKey<TransverseForceKeys>>& transverse_force_key_table()
   return table;
 }
 
+const std::vector<SettingKey<SupportKeys>>& support_key_table() {
+  static const std::vector<SettingKey<SupportKeys>> table = [] {
+    auto fix = described_key<SupportKeys>("fix", "`all` \\| list of `ux, uy, uz, rx, ry, rz`", "held DOFs", "");
+    fix.read = [](const YamlReader& reader, const YAML::Node& node, const std::string& path, SupportKeys& s) {
+      if (node.IsScalar() && node.Scalar() == "all") s.fixed.fill(true);
+      else if (node.IsSequence())
+        for (std::size_t k = 0; k < node.size(); ++k) {
+          const std::string c = reader.choice(node[k], list_item(path, k), {"ux", "uy", "uz", "rx", "ry", "rz"});
+          for (int j = 0; j < 6; ++j)
+            if (c == kComponentNames[j]) s.fixed[j] = true;
+        }
+      else reader.fail(node, path, "expected 'all' or a list of ux, uy, uz, rx, ry, rz");
+    };
+    fix.value = [](const SupportKeys& s) {
+      nlohmann::json held = nlohmann::json::array();
+      for (int j = 0; j < 6; ++j)
+        if (s.fixed[j]) held.push_back(kComponentNames[j]);
+      return held;
+    };
+    return keys_in_section<SupportKeys>(KeySection::kPhysics, {
+        node_key("at", &SupportKeys::at, "selector", "the node").must_be_given(),
+        std::move(fix.must_be_given()),
+    });
+  }();
+  return table;
+}
+
+const std::vector<SettingKey<ForceKeys>>& force_key_table() {
+  using F = ForceKeys;
+  static const std::vector<SettingKey<F>> table = keys_in_section<F>(KeySection::kPhysics, {
+        node_key("at", &F::at, "selector", "dead loads in global axes, on this node").must_be_given(),
+        vector_key("force", &F::force, "`[fx, fy, fz]` N", "force").default_is("—"),
+        vector_key("moment", &F::moment, "`[mx, my, mz]` N·mm", "moment").default_is("—"),
+    });
+  return table;
+}
+
+const std::vector<SettingKey<MotionKeys>>& motion_key_table() {
+  static const std::vector<SettingKey<MotionKeys>> table = [] {
+    std::vector<SettingKey<MotionKeys>> keys = {node_key("at", &MotionKeys::at, "selector",
+                                                         "imposed motions of this node (the DOF is then held in every step; on a "
+                                                         "supported DOF the support moves)")
+                                                    .must_be_given()};
+    for (int c = 0; c < 6; ++c) {
+      const bool rotation = c >= 3;
+      const double scale = rotation ? kDegree : 1.0;
+      auto key = described_key<MotionKeys>(kComponentNames[c], rotation ? "deg" : "mm",
+                                           std::string(rotation ? "rotation about " : "displacement along ") + "xyz"[c % 3], "");
+      key.read = [c, scale](const YamlReader& reader, const YAML::Node& node, const std::string& path, MotionKeys& m) {
+        m.components[c] = reader.number(node, path) * scale;
+      };
+      key.value = [c, scale](const MotionKeys& m) { return m.components[c] ? nlohmann::json(*m.components[c] / scale) : nlohmann::json(nullptr); };
+      keys.push_back(std::move(key.default_is("—")));
+    }
+    return keys_in_section<MotionKeys>(KeySection::kPhysics, std::move(keys));
+  }();
+  return table;
+}
+
 void LoadKeys::hold(const Support& support, const std::string& holder) {
   for (int c = 0; c < 6; ++c)
     if (support.fixed[c]) dof_uses_[{support.node, c}].support = holder;
@@ -83,16 +143,11 @@ void LoadKeys::parse_supports(const YAML::Node& node) {
   for (std::size_t i = 0; i < node.size(); ++i) {
     const std::string path = list_item("supports", i);
     reader_.check_keys(node[i], path, allowed_keys("supports[i]"));
+    SupportKeys keys;
+    read_setting_keys(reader_, node[i], path, support_key_table(), keys);
     Support s;
-    s.node = node_at_(reader_.require(node[i], path, "at"), path + ".at");
-    const YAML::Node fix = reader_.require(node[i], path, "fix");
-    if (fix.IsScalar() && fix.Scalar() == "all") s.fixed.fill(true);
-    else if (fix.IsSequence()) {
-      for (std::size_t k = 0; k < fix.size(); ++k) {
-        const std::string c = reader_.choice(fix[k], list_item(path + ".fix", k), {"ux", "uy", "uz", "rx", "ry", "rz"});
-        for (int j = 0; j < 6; ++j) if (c == kComponentNames[j]) s.fixed[j] = true;
-      }
-    } else reader_.fail(fix, path + ".fix", "expected 'all' or a list of ux, uy, uz, rx, ry, rz");
+    s.node = node_at_(keys.at, path + ".at");
+    s.fixed = keys.fixed;
     for (int c = 0; c < 6; ++c)
       if (s.fixed[c] && dof_uses_[{s.node, c}].support.empty()) dof_uses_[{s.node, c}].support = path;
     out_.model.supports.push_back(s);
@@ -193,13 +248,13 @@ void LoadKeys::parse_forces(const YAML::Node& node, const std::string& path, int
   for (std::size_t i = 0; i < node.size(); ++i) {
     const std::string p = list_item(path, i);
     reader_.check_keys(node[i], p, allowed_keys("steps[i].forces[i]"));
-    const int n = node_at_(reader_.require(node[i], p, "at"), p + ".at");
-    if (!node[i]["force"] && !node[i]["moment"]) reader_.fail(node[i], p, "expected 'force' and/or 'moment'");
-    for (const char* key : {"force", "moment"}) {
-      if (!node[i][key]) continue;
-      const auto v = reader_.numbers(node[i][key], p + "." + key, 3);
-      const int offset = std::string(key) == "force" ? 0 : 3;
-      for (int c = 0; c < 3; ++c) add_action(step, index, {NodalAction::kForce, n, offset + c, v[c]}, node[i][key], p + "." + key);
+    ForceKeys keys;
+    read_setting_keys(reader_, node[i], p, force_key_table(), keys);
+    const int n = node_at_(keys.at, p + ".at");
+    if (!keys.force && !keys.moment) reader_.fail(node[i], p, "expected 'force' and/or 'moment'");
+    for (const auto& [key, value, offset] : {std::tuple{"force", keys.force, 0}, std::tuple{"moment", keys.moment, 3}}) {
+      if (!value) continue;
+      for (int c = 0; c < 3; ++c) add_action(step, index, {NodalAction::kForce, n, offset + c, (*value)[c]}, node[i][key], p + "." + key);
     }
   }
 }
@@ -209,11 +264,12 @@ void LoadKeys::parse_motions(const YAML::Node& node, const std::string& path, in
   for (std::size_t i = 0; i < node.size(); ++i) {
     const std::string p = list_item(path, i);
     reader_.check_keys(node[i], p, allowed_keys("steps[i].motions[i]"));
-    const int n = node_at_(reader_.require(node[i], p, "at"), p + ".at");
+    MotionKeys keys;
+    read_setting_keys(reader_, node[i], p, motion_key_table(), keys);
+    const int n = node_at_(keys.at, p + ".at");
     for (int c = 0; c < 6; ++c)
-      if (const YAML::Node v = node[i][kComponentNames[c]])
-        add_action(step, index, {NodalAction::kMotion, n, c, reader_.number(v, p + "." + kComponentNames[c]) * (c >= 3 ? kDegree : 1.0)}, v,
-                   p + "." + kComponentNames[c]);
+      if (keys.components[c])
+        add_action(step, index, {NodalAction::kMotion, n, c, *keys.components[c]}, node[i][kComponentNames[c]], p + "." + kComponentNames[c]);
   }
 }
 

@@ -2,6 +2,7 @@
 // contradictory ones (a DOF driven twice in a step, a load where a support or a motion holds it).
 #pragma once
 #include <functional>
+#include <array>
 #include <map>
 #include <optional>
 #include <string>
@@ -28,6 +29,27 @@ struct TransverseForceKeys {
   std::string through = "core";    // core | section | saddle
   std::optional<double> saddle_length;  // mm, with through: saddle
 };
+
+struct SupportKeys {
+  YAML::Node at;                    // node selector
+  std::array<bool, 6> fixed{};      // ux, uy, uz, rx, ry, rz
+};
+
+// A dead load on a node, in global axes.
+struct ForceKeys {
+  YAML::Node at;
+  std::optional<Vec3> force, moment;  // N, N mm
+};
+
+// Imposed motions of a node: displacements in mm, rotations held in radians.
+struct MotionKeys {
+  YAML::Node at;
+  std::array<std::optional<double>, 6> components;  // ux, uy, uz, rx, ry, rz
+};
+
+const std::vector<SettingKey<SupportKeys>>& support_key_table();
+const std::vector<SettingKey<ForceKeys>>& force_key_table();    // at least one of force and moment: the reader checks
+const std::vector<SettingKey<MotionKeys>>& motion_key_table();
 
 // The keys of `steps[i]` (name, increments, cycles; strands also the end loads) and `steps[i].transverse_force`.
 // Which loads exclude each other, and what needs free ends or a saddle: the reader checks.

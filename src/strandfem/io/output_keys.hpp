@@ -7,8 +7,8 @@
 
 namespace strandfem {
 
-// The keys of `output:` but `monitor` (a node selector, read with the case's nodes), each with its type, range,
-// default and meaning. `clamp_edge_offset` is checked against the strand's length by the case reader.
+// The keys of `output:` but `monitor` (a node selector: monitor_key_table), each with its type, range, default
+// and meaning. `clamp_edge_offset` is checked against the strand's length by the case reader.
 const std::vector<SettingKey<OutputOptions>>& output_key_table();
 
 }  // namespace strandfem

@@ -6,9 +6,11 @@
 #include <optional>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
+#include "strandfem/core/types.hpp"
 #include "strandfem/io/yaml_reader.hpp"
 
 namespace strandfem {
@@ -145,6 +147,50 @@ SettingKey<Settings> boolean_key(std::string name, bool Settings::*member, std::
   return key;
 }
 
+template <class Settings>
+SettingKey<Settings> text_key(std::string name, std::string Settings::*member, std::string type, std::string meaning) {
+  auto key = described_key<Settings>(std::move(name), std::move(type), std::move(meaning), "");
+  key.read = [member](const YamlReader& reader, const YAML::Node& node, const std::string& path, Settings& s) { s.*member = reader.text(node, path); };
+  key.value = [member](const Settings& s) { return (s.*member).empty() ? nlohmann::json(nullptr) : nlohmann::json(s.*member); };
+  return key;
+}
+
+// Three numbers `[x, y, z]`, held as a Vec3 (or an optional one, null in the resolved configuration when left out).
+template <class Settings, class Vector>
+SettingKey<Settings> vector_key(std::string name, Vector Settings::*member, std::string type, std::string meaning) {
+  auto key = described_key<Settings>(std::move(name), std::move(type), std::move(meaning), "");
+  key.read = [member](const YamlReader& reader, const YAML::Node& node, const std::string& path, Settings& s) {
+    const auto v = reader.numbers(node, path, 3);
+    s.*member = Vec3(v[0], v[1], v[2]);
+  };
+  key.value = [member](const Settings& s) {
+    const auto to_json = [](const Vec3& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); };
+    if constexpr (std::is_same_v<Vector, Vec3>) return to_json(s.*member);
+    else return s.*member ? to_json(*(s.*member)) : nlohmann::json(nullptr);
+  };
+  return key;
+}
+
+template <class Settings>
+SettingKey<Settings> optional_integer_key(std::string name, std::optional<int> Settings::*member, int minimum, int maximum, std::string meaning) {
+  auto key = described_key<Settings>(std::move(name), "integer " + std::to_string(minimum) + ".." + std::to_string(maximum), std::move(meaning), "");
+  key.read = [member, minimum, maximum](const YamlReader& reader, const YAML::Node& node, const std::string& path, Settings& s) {
+    s.*member = reader.integer(node, path, minimum, maximum);
+  };
+  key.value = [member](const Settings& s) { return s.*member ? nlohmann::json(*(s.*member)) : nlohmann::json(nullptr); };
+  key.default_rule = "—";
+  return key;
+}
+
+// A mapping read later by code of its own (a node selector): the key keeps the YAML node.
+template <class Settings>
+SettingKey<Settings> node_key(std::string name, YAML::Node Settings::*member, std::string type, std::string meaning) {
+  auto key = described_key<Settings>(std::move(name), std::move(type), std::move(meaning), "");
+  key.read = [member](const YamlReader&, const YAML::Node& node, const std::string&, Settings& s) { s.*member = node; };
+  key.value = [](const Settings&) { return nlohmann::json(nullptr); };
+  return key;
+}
+
 // A key whose value is one of named options, each stored as a value of the member's type (an enum or a string).
 template <class Settings, class Value>
 SettingKey<Settings> choice_key(std::string name, Value Settings::*member, std::vector<std::pair<std::string, Value>> options,
@@ -189,7 +235,7 @@ void read_setting_keys(const YamlReader& reader, const YAML::Node& node, const s
                        const std::vector<SettingKey<Settings>>& table, Settings& settings) {
   for (const auto& key : table) {
     if (const YAML::Node n = node[key.name])
-      key.read(reader, n, mapping + "." + key.name, settings);
+      key.read(reader, n, mapping.empty() ? key.name : mapping + "." + key.name, settings);
     else if (key.required)
       reader.require(node, mapping, key.name.c_str());
   }
@@ -212,7 +258,7 @@ std::string default_text(const nlohmann::json& value);
 template <class Settings>
 std::string key_row(const std::string& mapping, const SettingKey<Settings>& key) {
   const std::string shown = key.required ? "—" : key.default_rule.empty() ? default_text(key.value(Settings{})) : key.default_rule;
-  return format_key_row(mapping + "." + key.name, key.type, shown, key.meaning, key.section, key.when_to_touch);
+  return format_key_row(mapping.empty() ? key.name : mapping + "." + key.name, key.type, shown, key.meaning, key.section, key.when_to_touch);
 }
 
 }  // namespace strandfem
