@@ -17,12 +17,8 @@ const char* const kComponentNames[6] = {"ux", "uy", "uz", "rx", "ry", "rz"};
 }  // namespace
 
 const std::vector<SettingKey<LoadStep>>& step_key_table() {
-  static const std::vector<SettingKey<LoadStep>> table = [] {
-    auto name = described_key<LoadStep>("name", "text", "step name in progress lines and results", "");
-    name.read = [](const YamlReader& reader, const YAML::Node& node, const std::string& path, LoadStep& s) { s.name = reader.text(node, path); };
-    name.value = [](const LoadStep& s) { return nlohmann::json(s.name); };
-    return keys_in_section<LoadStep>(KeySection::kPhysics, {
-        std::move(name.default_is("`step1`, `step2`, … by position")),
+  static const std::vector<SettingKey<LoadStep>> table = keys_in_section<LoadStep>(KeySection::kPhysics, {
+        text_key("name", &LoadStep::name, "text", "step name in progress lines and results").default_is("`step1`, `step2`, … by position"),
         integer_key("increments", &LoadStep::increments, 1, kMaxIncrementsPerStep,
                     "equal load levels the step reaches (totals at its end); cut increments never step past the next level, so "
                     "results land on them")
@@ -32,7 +28,6 @@ const std::vector<SettingKey<LoadStep>>& step_key_table() {
                     "`increments`; actions not listed (the tension) are held. Writes `loops.csv` and `deflection_curves.csv`")
             .default_is("— (not cyclic)"),
     });
-  }();
   return table;
 }
 

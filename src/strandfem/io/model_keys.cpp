@@ -46,9 +46,6 @@ const std::vector<SettingKey<StrandSettings>>& strand_key_table() {
 const std::vector<SettingKey<LayerSpec>>& layer_key_table() {
   using L = LayerSpec;
   static const std::vector<SettingKey<L>> table = [] {
-    auto material = described_key<L>("material", "name", "one of `materials`", "");
-    material.read = [](const YamlReader& reader, const YAML::Node& node, const std::string& path, L& l) { l.material = reader.text(node, path); };
-    material.value = [](const L& l) { return nlohmann::json(l.material); };
     // Read after `wires`, whose count the list must match.
     auto start_angles = described_key<L>("start_angles", "list of deg, one per wire",
                                          "per-wire angular positions at z = 0 (instead of `start_angle`); stacked wires are refused", "");
@@ -65,7 +62,7 @@ const std::vector<SettingKey<LayerSpec>>& layer_key_table() {
     return keys_in_section<L>(KeySection::kPhysics, {
         integer_key("wires", &L::wires, 1, kMaxWiresPerLayer, "layer 0 (the core) has 1").must_be_given(),
         number_key("diameter", &L::wire_diameter, NumberRange::positive(), "mm", "wire diameter").must_be_given(),
-        std::move(material.must_be_given()),
+        text_key("material", &L::material, "name", "one of `materials`").must_be_given(),
         degree_key("lay_angle", &L::lay_angle, NumberRange::open(0, 90), "from the strand axis; not for the core").must_be_given(),
         choice_key("lay_direction", &L::lay_direction, {{"right", 1}, {"left", -1}}, "not for the core")
             .default_is("alternating, outer layer right"),
