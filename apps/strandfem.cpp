@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <cstdio>
 #include <filesystem>
+#include <iomanip>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -15,6 +16,7 @@
 #include <unistd.h>
 
 #include "strandfem/io/case_file.hpp"
+#include "strandfem/io/conductor_catalogue.hpp"
 #include "strandfem/io/case_keys.hpp"
 #include "strandfem/core/archive.hpp"
 #include "strandfem/io/case_run.hpp"
@@ -135,9 +137,9 @@ void print_report(const std::string& output_dir) {
   std::cout << strandfem::end_of_run_report(summary) << "results in " << output_dir << "\n";
 }
 
-int run_case_file(const std::string& case_path, const std::string& output_dir, int threads, bool quiet, bool verbose,
-             bool plots, bool resume, int stop_after, int dump_tangent = 0) {
-  strandfem::CaseDefinition c = strandfem::load_case(case_path);
+int run_case_file(const std::string& case_path, const std::string& catalogue, const std::string& output_dir, int threads, bool quiet,
+                  bool verbose, bool plots, bool resume, int stop_after, int dump_tangent = 0) {
+  strandfem::CaseDefinition c = strandfem::load_case(case_path, catalogue);
   if (dump_tangent > 0) {
     c.model.options.dump_tangent_factorization = dump_tangent;
     c.model.options.dump_tangent_path = (std::filesystem::path(output_dir) / ("tangent_" + std::to_string(dump_tangent) + ".bin")).string();
@@ -186,7 +188,7 @@ int run_sweep_command(const strandfem::SweepDefinition& sweep, int threads, bool
   const auto variants = strandfem::run_sweep(
       sweep,
       [&](const strandfem::SweepVariant& v) {
-        return run_case_file(v.case_file, (fs::path(sweep.output_dir) / v.name).string(), threads, true, false, false, false, 0);
+        return run_case_file(v.case_file, sweep.catalogue, (fs::path(sweep.output_dir) / v.name).string(), threads, true, false, false, false, 0);
       },
       [&](const std::string& line) {
         if (!quiet) std::cerr << line << "\n";
@@ -196,6 +198,25 @@ int run_sweep_command(const strandfem::SweepDefinition& sweep, int threads, bool
     if (!quiet) std::cerr << "sweep of " << variants.size() << " cases in " << sweep.output_dir << " (sweep.csv, sweep.png)\n";
   }
   return strandfem::sweep_exit_code(variants);
+}
+
+// strandfem conductors: a table of the catalogue (a user's file first), one conductor per row.
+int list_conductors(const std::string& catalogue) {
+  std::vector<strandfem::CatalogueConductor> conductors;
+  if (!catalogue.empty()) conductors = strandfem::read_conductor_catalogue_file(catalogue);
+  const auto& shipped = strandfem::shipped_conductor_catalogue();
+  conductors.insert(conductors.end(), shipped.begin(), shipped.end());
+  std::vector<std::vector<std::string>> rows = {strandfem::conductor_summary_header()};
+  for (const auto& c : conductors) rows.push_back(strandfem::conductor_summary_row(c));
+  std::vector<std::size_t> widths(rows.front().size(), 0);
+  for (const auto& row : rows)
+    for (std::size_t i = 0; i < row.size(); ++i) widths[i] = std::max(widths[i], row[i].size());
+  for (const auto& row : rows) {
+    for (std::size_t i = 0; i < row.size(); ++i)
+      std::cout << (i == 0 ? "" : "  ") << (i < 2 ? std::left : std::right) << std::setw(static_cast<int>(widths[i])) << row[i];
+    std::cout << "\n";
+  }
+  return std::cout ? 0 : kExitOutputError;
 }
 
 // OpenBLAS chooses its kernels once, when it loads: to use faster ones than it picked, the program restarts itself
@@ -234,7 +255,8 @@ int main(int argc, char** argv) {
   CLI::App app{"StrandFEM: finite elements for multilayered helical wire strands"};
   app.set_version_flag("--version", STRANDFEM_VERSION);
   app.require_subcommand(1);
-  std::string case_path, output_dir = "results";
+  std::string case_path, output_dir = "results", catalogue;
+  const char* catalogue_help = "A conductor catalogue (CSV, the columns of share/strandfem/data/conductors.csv) searched before the shipped one";
   int threads = 0, stop_after = 0, dump_tangent = 0;
   bool quiet = false, verbose = false, plots = false, resume = false;
   auto* run = app.add_subcommand("run", "Solve a case and write its results folder");
@@ -250,6 +272,7 @@ int main(int argc, char** argv) {
   run->add_option("--dump-tangent", dump_tangent,
                   "Write the tangent of this invocation's K-th factorization to OUTPUT/tangent_K.bin (for bench/tangent_bench)")
       ->check(CLI::Range(1, 1000000000));
+  run->add_option("--catalogue", catalogue, catalogue_help)->check(CLI::ExistingFile);
   run->add_flag("--plots", plots, "Draw the results' figures (PNG, into the results folder; needs python3-matplotlib)");
   std::vector<std::string> sweep_cases, sweep_values, sweep_settings;
   std::string sweep_key;
@@ -261,8 +284,12 @@ int main(int argc, char** argv) {
   sweep->add_option("--set", sweep_settings, "KEY=VALUE set in every variant (repeatable), e.g. contact.friction_direction=slave_wire");
   sweep->add_option("-t,--threads", threads, "OpenMP threads for element evaluation (0: default)")->check(CLI::NonNegativeNumber);
   sweep->add_flag("-q,--quiet", quiet, "No progress lines");
+  sweep->add_option("--catalogue", catalogue, catalogue_help)->check(CLI::ExistingFile);
   auto* info = app.add_subcommand("info", "Print model sizes and analytic references as JSON, without solving");
   info->add_option("case", case_path, "Case file (YAML)")->required();
+  info->add_option("--catalogue", catalogue, catalogue_help)->check(CLI::ExistingFile);
+  auto* conductors = app.add_subcommand("conductors", "List the conductor catalogue: construction, area, mass, EImax and EImin of each conductor");
+  conductors->add_option("--catalogue", catalogue, catalogue_help + std::string(" (listed before it)"))->check(CLI::ExistingFile);
   auto* keys = app.add_subcommand("keys", "Print every case-file key with type, range, default and meaning (the rows of docs/case-files.md)");
   try {
     app.parse(argc, argv);
@@ -272,7 +299,7 @@ int main(int argc, char** argv) {
   }
   try {
     if (info->parsed()) {
-      const strandfem::CaseDefinition c = strandfem::load_case(case_path);
+      const strandfem::CaseDefinition c = strandfem::load_case(case_path, catalogue);
       for (const auto& w : c.warnings) std::cerr << "warning: " << w << "\n";
       std::cout << strandfem::model_report(c).dump(2) << "\n" << std::flush;
       if (!std::cout) {
@@ -281,6 +308,7 @@ int main(int argc, char** argv) {
       }
       return 0;
     }
+    if (conductors->parsed()) return list_conductors(catalogue);
     if (keys->parsed()) {
       std::cout << "| key | type, unit, range | default | meaning |\n|---|---|---|---|\n";
       for (const std::string& row : strandfem::setting_key_rows(strandfem::KeySection::kPhysics)) std::cout << row << "\n";
@@ -288,8 +316,8 @@ int main(int argc, char** argv) {
       for (const std::string& row : strandfem::setting_key_rows(strandfem::KeySection::kAdvanced)) std::cout << row << "\n";
       return std::cout ? 0 : kExitOutputError;
     }
-    if (sweep->parsed()) return run_sweep_command({sweep_cases, sweep_key, sweep_values, sweep_settings, output_dir}, threads, quiet);
-    return run_case_file(case_path, output_dir, threads, quiet, verbose, plots, resume, stop_after, dump_tangent);
+    if (sweep->parsed()) return run_sweep_command({sweep_cases, sweep_key, sweep_values, sweep_settings, output_dir, catalogue}, threads, quiet);
+    return run_case_file(case_path, catalogue, output_dir, threads, quiet, verbose, plots, resume, stop_after, dump_tangent);
   } catch (const strandfem::CaseError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return kExitBadInput;

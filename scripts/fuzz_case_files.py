@@ -38,7 +38,7 @@ INTEGER_KEYS = {"wires": 1, "elements_per_wire": 1, "elements": 1, "node": 0, "i
 # Bytes that make a file invalid UTF-8 text for sure: C0 controls other than tab/LF/CR, DEL, lone continuation
 # bytes, bytes that never start a UTF-8 sequence.
 BAD_BYTES = [b for b in range(0x00, 0x20) if b not in (0x09, 0x0A, 0x0D)] + [0x7F] + list(range(0x80, 0xC0)) + [0xC0, 0xC1] + list(range(0xF5, 0x100))
-NULLABLE_INFO_KEYS = {"lateral_clearance_mm", "radial_overlap_mm"}
+NULLABLE_INFO_KEYS = {"lateral_clearance_mm", "radial_overlap_mm", "lay_ratio", "conductor"}  # null for the core; for a strand of its own layers
 
 
 class DuplicateKeyLoader(yaml.SafeLoader):

@@ -54,6 +54,21 @@ TEST(Install, InstalledProgramRunsAShippedBendingCaseAndDrawsItsFigures) {
   EXPECT_EQ(text_of(folder / "stderr.txt").find("warning: figures not drawn"), std::string::npos) << text_of(folder / "stderr.txt");
 }
 
+// The catalogue travels inside the program; its file is installed beside the cases, and the installed program reads
+// it as a user's catalogue (every conductor then listed twice: the file's rows first).
+TEST(Install, InstalledProgramListsTheConductorCatalogue) {
+  const fs::path prefix = installed_prefix("strandfem_prefix_catalogue");
+  ASSERT_FALSE(prefix.empty()) << "cmake --install failed";
+  const fs::path catalogue = prefix / "share" / "strandfem" / "data" / "conductors.csv";
+  ASSERT_TRUE(fs::exists(catalogue));
+  const fs::path folder = fs::path(::testing::TempDir()) / "strandfem_installed_conductors";
+  ASSERT_EQ(run_installed(prefix, "conductors --catalogue '" + catalogue.string() + "'", folder), 0) << text_of(folder / "stderr.txt");
+  const std::string listed = text_of(folder / "stdout.txt");
+  const std::size_t first = listed.find("\nDrake "), second = listed.find("\nDrake ", first + 1);
+  EXPECT_NE(first, std::string::npos) << listed;
+  EXPECT_NE(second, std::string::npos) << listed;
+}
+
 TEST(Install, PlotsWithoutMatplotlibSayWhatToInstallAndKeepTheResults) {
   const fs::path prefix = installed_prefix("strandfem_prefix_no_matplotlib");
   ASSERT_FALSE(prefix.empty()) << "cmake --install failed";

@@ -2,6 +2,7 @@
 
 #include "strandfem/io/beam_keys.hpp"
 #include "strandfem/io/case_keys.hpp"
+#include "strandfem/io/conductor_catalogue.hpp"
 #include "strandfem/io/contact_keys.hpp"
 #include "strandfem/io/resolved_configuration.hpp"
 #include "strandfem/io/load_keys.hpp"
@@ -29,14 +30,15 @@ constexpr double kDegree = std::numbers::pi / 180.0;
 
 class CaseParser {
  public:
-  CaseParser(const std::string& path, CaseDefinition& out) : reader_(path), out_(out) {}
+  CaseParser(const std::string& path, const std::string& catalogue, CaseDefinition& out) : reader_(path), catalogue_(catalogue), out_(out) {}
 
   void parse(const YAML::Node& root) {
     reader_.check_keys(root, "", allowed_keys(""));
     CaseHeading heading;
     read_setting_keys(reader_, root, "", case_heading_key_table(), heading);
     out_.title = heading.title;
-    parse_materials(reader_.require(root, "", "materials"));
+    // A catalogue conductor brings its own materials; a case's `materials` may still replace them by name.
+    if (root["materials"] || !(root["strand"].IsMap() && root["strand"]["conductor"])) parse_materials(reader_.require(root, "", "materials"));
     const bool has_strand = root["strand"].IsDefined(), has_beams = root["beams"].IsDefined();
     if (has_strand == has_beams) reader_.fail(root, "strand/beams", "expected exactly one of 'strand' or 'beams'");
     if (has_strand) parse_strand(root["strand"], root["mesh"]);
@@ -105,9 +107,64 @@ class CaseParser {
     StrandSettings strand;
     read_setting_keys(reader_, node, "strand", strand_key_table(), strand);
     StrandSpec spec;
-    spec.materials = materials_;
+    const YAML::Node layers = node["layers"];
+    if (!strand.conductor.empty()) {
+      if (layers) reader_.fail(layers, "strand.layers", "give strand.conductor or strand.layers, not both");
+      spec = conductor_spec(node, strand);
+    } else {
+      for (const char* key : {"lay_ratios", "lay_angles"})
+        if (node[key]) reader_.fail(node[key], std::string("strand.") + key, "only with strand.conductor (the layers set their own lay_angle)");
+      spec = layer_spec(reader_.require(node, "strand", "layers"));
+    }
     spec.length = strand.length;
-    const YAML::Node layers = reader_.require(node, "strand", "layers");
+    // Nominal overlaps: warn for small ones (real strands have them), refuse large ones.
+    for (std::size_t i = 1; i < spec.layers.size(); ++i) {
+      const double clearance = lateral_clearance(spec, static_cast<int>(i));
+      if (std::isnan(clearance) || clearance >= 0) continue;
+      const double radius = 0.5 * spec.layers[i].wire_diameter;
+      std::ostringstream msg;
+      msg << "layer " << i << ": neighbouring wires overlap by " << -clearance << " mm at the nominal radius of eq. 2.1";
+      const YAML::Node where = layers ? layers[i] : node["conductor"];
+      const std::string path = layers ? list_item("strand.layers", i) : "strand.conductor";
+      if (-clearance > 0.25 * radius)
+        reader_.fail(where, path, msg.str() + ", more than 25 % of the wire radius: check wires, diameter and lay_angle" +
+                                      (spec.layers[i].wire_start_angles.empty() ? "" : " (and start_angles: the closest two wires count)"));
+      out_.warnings.push_back(msg.str());
+    }
+    build_strand(node, mesh, strand, spec);
+  }
+
+  // The strand of a catalogue conductor, its materials added to the case's (which replace them by name).
+  StrandSpec conductor_spec(const YAML::Node& node, const StrandSettings& strand) {
+    if (!catalogue_.empty() && user_catalogue_.empty()) {
+      try {
+        user_catalogue_ = read_conductor_catalogue_file(catalogue_);
+      } catch (const CaseError& e) {
+        reader_.fail(node["conductor"], "strand.conductor", std::string("in the catalogue given with --catalogue: ") + e.what());
+      }
+    }
+    const CatalogueConductor* c = find_conductor(user_catalogue_, strand.conductor);
+    if (!c) reader_.fail(node["conductor"], "strand.conductor", "unknown conductor '" + strand.conductor + "' (`strandfem conductors` lists the catalogue)");
+    if (node["lay_ratios"] && node["lay_angles"]) reader_.fail(node, "strand", "give lay_ratios or lay_angles, not both");
+    ConductorStrand s;
+    try {
+      s = conductor_strand(*c, strand.lay_ratios, strand.lay_angles);
+    } catch (const std::invalid_argument& e) {
+      const char* key = node["lay_ratios"] ? "lay_ratios" : node["lay_angles"] ? "lay_angles" : "conductor";
+      reader_.fail(node[key], std::string("strand.") + key, e.what());
+    }
+    for (const auto& [name, m] : s.strand.materials) materials_.emplace(name, m);
+    s.strand.materials = materials_;
+    for (const std::string& w : s.warnings) out_.warnings.push_back(w);
+    out_.conductor = c->name;
+    out_.conductor_origin = c->origin;
+    return s.strand;
+  }
+
+  // The strand of the case's own `layers`.
+  StrandSpec layer_spec(const YAML::Node& layers) {
+    StrandSpec spec;
+    spec.materials = materials_;
     if (!layers.IsSequence() || layers.size() == 0) reader_.fail(layers, "strand.layers", "expected a list of layers, core first");
     const std::vector<int> default_directions = default_lay_directions(static_cast<int>(layers.size()));
     static const std::vector<SettingKey<LayerSpec>> core_keys = [] {
@@ -129,18 +186,11 @@ class CaseParser {
       if (i == 0 && layer.wires != 1) reader_.fail(l["wires"], path + ".wires", "the core (first layer) must have exactly 1 wire");
       spec.layers.push_back(layer);
     }
-    // Nominal overlaps: warn for small ones (real strands have them), refuse large ones.
-    for (std::size_t i = 1; i < spec.layers.size(); ++i) {
-      const double clearance = lateral_clearance(spec, static_cast<int>(i));
-      if (std::isnan(clearance) || clearance >= 0) continue;
-      const double radius = 0.5 * spec.layers[i].wire_diameter;
-      std::ostringstream msg;
-      msg << "layer " << i << ": neighbouring wires overlap by " << -clearance << " mm at the nominal radius of eq. 2.1";
-      if (-clearance > 0.25 * radius)
-        reader_.fail(layers[i], list_item("strand.layers", i), msg.str() + ", more than 25 % of the wire radius: check wires, diameter and lay_angle" +
-                                                           (spec.layers[i].wire_start_angles.empty() ? "" : " (and start_angles: the closest two wires count)"));
-      out_.warnings.push_back(msg.str());
-    }
+    return spec;
+  }
+
+  // The mesh, end planes and clamps of the strand `spec`.
+  void build_strand(const YAML::Node& node, const YAML::Node& mesh, const StrandSettings& strand, const StrandSpec& spec) {
     out_.end_type = strand.ends;
     if (mesh) {
       reader_.check_keys(mesh, "mesh", allowed_keys("mesh"));
@@ -332,6 +382,8 @@ class CaseParser {
   }
 
   YamlReader reader_;
+  std::string catalogue_;  // --catalogue: searched before the shipped catalogue
+  std::vector<CatalogueConductor> user_catalogue_;
   CaseDefinition& out_;
   StrandModelParts strand_;  // strands: the built parts' node numbers (the mesh, ties and supports move to out_.model)
   std::map<std::string, Material> materials_;
@@ -350,12 +402,12 @@ bool has_cyclic_strand_step(const CaseDefinition& c) {
 }
 
 namespace {
-CaseDefinition parse_case(const YAML::Node& root, const std::string& path) {
+CaseDefinition parse_case(const YAML::Node& root, const std::string& path, const std::string& catalogue) {
   if (!root.IsMap()) throw CaseError(path + ": expected a YAML mapping at the top level");
   CaseDefinition c;
   c.path = path;
   try {
-    CaseParser(path, c).parse(root);
+    CaseParser(path, catalogue, c).parse(root);
   } catch (const YAML::Exception& e) {
     // A node used as what it is not (a scalar indexed as a mapping...) that no check above caught: still bad input.
     std::string where = path;
@@ -383,10 +435,12 @@ CaseDefinition parse_case(const YAML::Node& root, const std::string& path) {
 }
 }  // namespace
 
-CaseDefinition load_case(const std::string& path) { return parse_case(load_yaml_document(path), path); }
+CaseDefinition load_case(const std::string& path, const std::string& catalogue) {
+  return parse_case(load_yaml_document(path), path, catalogue);
+}
 
-CaseDefinition load_case_text(const std::string& text, const std::string& name) {
-  return parse_case(parse_yaml_document(text, name), name);
+CaseDefinition load_case_text(const std::string& text, const std::string& name, const std::string& catalogue) {
+  return parse_case(parse_yaml_document(text, name), name, catalogue);
 }
 
 }  // namespace strandfem

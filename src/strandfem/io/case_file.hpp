@@ -32,6 +32,8 @@ struct CaseDefinition {
   std::string path;
   std::optional<StrandSpec> strand;   // present for strand cases
   std::string end_type;               // strand: fixed | free
+  std::string conductor;              // strand: the catalogue conductor it was built from (empty: its own layers)
+  std::string conductor_origin;       // and the catalogue row (file:line) that conductor starts at
   MeshSpec mesh_spec;
   Model model;
   OutputOptions output;
@@ -46,10 +48,11 @@ struct CaseDefinition {
   nlohmann::json resolved;            // the fully resolved configuration, written with the results
 };
 
-// Reads and validates a case file; throws CaseError naming the key and the expected value.
-CaseDefinition load_case(const std::string& path);
+// Reads and validates a case file; throws CaseError naming the key and the expected value. `catalogue`: a conductor
+// catalogue file searched before the shipped one for `strand.conductor` (empty: the shipped one alone).
+CaseDefinition load_case(const std::string& path, const std::string& catalogue = {});
 // The same from case-file text in memory (the Python API's Case.from_dict); `name` stands for the file in messages.
-CaseDefinition load_case_text(const std::string& text, const std::string& name);
+CaseDefinition load_case_text(const std::string& text, const std::string& name, const std::string& catalogue = {});
 
 // A strand bent in cycles: a strand case with a cyclic step (its bending results and profiles are written).
 bool has_cyclic_strand_step(const CaseDefinition& c);

@@ -97,7 +97,7 @@ std::vector<SweepVariant> run_sweep(const SweepDefinition& sweep, const std::fun
   const int rank = process_rank();
   std::vector<SweepVariant> variants = sweep_variants(sweep, rank == 0);
   ProcessQueue queue(static_cast<int>(variants.size()));  // after rank 0 wrote the case files
-  for (const SweepVariant& v : variants) load_case(v.case_file);  // bad input stops the sweep before it runs
+  for (const SweepVariant& v : variants) load_case(v.case_file, sweep.catalogue);  // bad input stops the sweep before it runs
   const std::string who = queue.processes() > 1 ? "sweep (process " + std::to_string(rank) + "): " : "sweep: ";
   std::vector<int> exit_codes(variants.size(), std::numeric_limits<int>::min());
   for (int i = queue.next(); i >= 0; i = queue.next()) {

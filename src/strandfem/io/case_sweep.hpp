@@ -13,6 +13,7 @@ struct SweepDefinition {
   std::vector<std::string> values;    // its values
   std::vector<std::string> settings;  // KEY=VALUE set in every variant
   std::string output_dir;
+  std::string catalogue;              // --catalogue: a conductor catalogue searched before the shipped one
 };
 
 struct SweepVariant {

@@ -29,6 +29,30 @@ const std::vector<SettingKey<BilinearHardening>>& plasticity_key_table() {
   return table;
 }
 
+namespace {
+// A list of numbers, one per layer around the core: its length is checked against the conductor's layers.
+SettingKey<StrandSettings> layer_list_key(const char* name, std::vector<double> StrandSettings::*member, double scale, std::string type,
+                                          std::string meaning) {
+  auto key = described_key<StrandSettings>(name, std::move(type), std::move(meaning), "");
+  key.read = [member, scale](const YamlReader& reader, const YAML::Node& node, const std::string& path, StrandSettings& s) {
+    if (!node.IsSequence() || node.size() == 0) reader.fail(node, path, "expected a list of numbers, one per layer around the core");
+    s.*member = reader.numbers(node, path, node.size());
+    for (std::size_t i = 0; i < node.size(); ++i) {
+      const double v = (s.*member)[i];
+      if (!(v > 0) || (scale != 1 && !(v < 90))) reader.fail(node[i], path, scale != 1 ? "expected an angle in (0, 90) degrees" : "expected a number > 0");
+      (s.*member)[i] = v * scale;
+    }
+  };
+  key.value = [member, scale](const StrandSettings& s) {
+    if ((s.*member).empty()) return nlohmann::json(nullptr);
+    nlohmann::json list = nlohmann::json::array();
+    for (double v : s.*member) list.push_back(v / scale);
+    return list;
+  };
+  return key;
+}
+}  // namespace
+
 const std::vector<SettingKey<StrandSettings>>& strand_key_table() {
   using S = StrandSettings;
   static const std::vector<SettingKey<S>> table = keys_in_section<S>(KeySection::kPhysics, {
@@ -39,6 +63,16 @@ const std::vector<SettingKey<StrandSettings>>& strand_key_table() {
                    "every wire's nodes within this length of each end are tied rigidly to the end plane, as a clamp that grips the "
                    "strand over its jaws")
             .typed("mm, ≥ 0 and below half the length"),
+        text_key("conductor", &S::conductor, "name",
+                 "a conductor of the catalogue (`strandfem conductors`; a file of your own with `--catalogue`) instead of `layers`: its "
+                 "layers, wire materials (`materials` may replace one by name) and lay angles; directions alternating, outer layer right")
+            .default_is("—"),
+        layer_list_key("lay_ratios", &S::lay_ratios, 1, "list, one per layer around the core",
+                       "with `conductor`: lay length over the layer's outer diameter; `strandfem info` warns outside EN 50182's range")
+            .default_is("the catalogue's lay angles, else the middle of EN 50182's range"),
+        layer_list_key("lay_angles", &S::lay_angles, kRadiansPerDegree, "list of deg, one per layer around the core",
+                       "with `conductor`, instead of `lay_ratios`")
+            .default_is("—"),
     });
   return table;
 }

@@ -1,5 +1,6 @@
 #include "strandfem/io/resolved_configuration.hpp"
 
+#include "strandfem/geometry/lay_ratio.hpp"
 #include "strandfem/io/load_keys.hpp"
 #include "strandfem/io/model_keys.hpp"
 #include "strandfem/io/output_keys.hpp"
@@ -15,7 +16,14 @@ nlohmann::json resolved_strand(const CaseDefinition& c) {
     if (i == 0) layer["lay_direction"] = "none";  // the core is straight
     layers.push_back(layer);
   }
-  nlohmann::json resolved = resolved_setting_keys(strand_key_table(), StrandSettings{strand.length, c.end_type, c.clamp_length});
+  StrandSettings settings{strand.length, c.end_type, c.clamp_length, c.conductor, {}, {}};
+  if (!c.conductor.empty())
+    for (std::size_t i = 1; i < strand.layers.size(); ++i) {
+      settings.lay_ratios.push_back(lay_ratio_from_angle(layer_radius(strand, static_cast<int>(i)), strand.layers[i].wire_diameter, strand.layers[i].lay_angle));
+      settings.lay_angles.push_back(strand.layers[i].lay_angle);
+    }
+  nlohmann::json resolved = resolved_setting_keys(strand_key_table(), settings);
+  if (!c.conductor.empty()) resolved["conductor_source"] = c.conductor_origin;  // the catalogue row it starts at
   resolved["layers"] = layers;
   return resolved;
 }

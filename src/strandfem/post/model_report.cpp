@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "strandfem/geometry/lay_ratio.hpp"
 #include "strandfem/post/analytic.hpp"
 
 namespace strandfem {
@@ -22,6 +23,7 @@ nlohmann::json model_report(const CaseDefinition& c) {
   if (!c.strand) return j;
   const StrandSpec& s = *c.strand;
   j["strand_length_mm"] = s.length;
+  j["conductor"] = c.conductor.empty() ? nlohmann::json(nullptr) : nlohmann::json(c.conductor);
   j["end_type"] = c.end_type;
   nlohmann::json layers = nlohmann::json::array();
   for (std::size_t i = 0; i < s.layers.size(); ++i) {
@@ -36,6 +38,8 @@ nlohmann::json model_report(const CaseDefinition& c) {
                       {"material", l.material},
                       {"lay_angle_deg", l.lay_angle * 180.0 / std::numbers::pi},
                       {"lay_direction", i == 0 ? "none" : (l.lay_direction > 0 ? "right" : "left")},
+                      {"lay_ratio", i == 0 ? nlohmann::json(nullptr)
+                                           : nlohmann::json(lay_ratio_from_angle(layer_radius(s, static_cast<int>(i)), l.wire_diameter, l.lay_angle))},
                       {"layer_radius_mm", layer_radius(s, static_cast<int>(i))},
                       {"lateral_clearance_mm", std::isnan(clearance) ? nlohmann::json(nullptr) : nlohmann::json(clearance)},
                       {"radial_overlap_mm", std::isnan(clearance) ? nlohmann::json(nullptr)
