@@ -288,6 +288,14 @@ int main(int argc, char** argv) {
   auto* info = app.add_subcommand("info", "Print model sizes and analytic references as JSON, without solving");
   info->add_option("case", case_path, "Case file (YAML)")->required();
   info->add_option("--catalogue", catalogue, catalogue_help)->check(CLI::ExistingFile);
+  double ps_tension = 0, ps_yb = 0;
+  auto* ps_tension_option = info->add_option("--tension", ps_tension, "With --yb: the tension (N) of the Poffenberger–Swart stress")
+                                ->check(CLI::PositiveNumber);
+  auto* ps_yb_option = info->add_option("--yb", ps_yb, "Peak-to-peak bending amplitude (mm) at 89 mm from the last point of contact: adds the Poffenberger–Swart "
+                                  "stress of the outer wires (`poffenberger_swart`)")
+      ->check(CLI::PositiveNumber)
+      ->needs(ps_tension_option);
+  ps_tension_option->needs(ps_yb_option);
   auto* conductors = app.add_subcommand("conductors", "List the conductor catalogue: construction, area, mass, EImax and EImin of each conductor");
   conductors->add_option("--catalogue", catalogue, catalogue_help + std::string(" (listed before it)"))->check(CLI::ExistingFile);
   auto* keys = app.add_subcommand("keys", "Print every case-file key with type, range, default and meaning (the rows of docs/case-files.md)");
@@ -301,7 +309,12 @@ int main(int argc, char** argv) {
     if (info->parsed()) {
       const strandfem::CaseDefinition c = strandfem::load_case(case_path, catalogue);
       for (const auto& w : c.warnings) std::cerr << "warning: " << w << "\n";
-      std::cout << strandfem::model_report(c).dump(2) << "\n" << std::flush;
+      nlohmann::json report = strandfem::model_report(c);
+      if (ps_yb > 0) {
+        if (!c.strand) throw strandfem::CaseError(case_path + ": --yb needs a strand case");
+        report["poffenberger_swart"] = strandfem::poffenberger_swart_report(*c.strand, ps_tension, ps_yb);
+      }
+      std::cout << report.dump(2) << "\n" << std::flush;
       if (!std::cout) {
         std::cerr << "error: cannot write the report to standard output\n";
         return kExitOutputError;

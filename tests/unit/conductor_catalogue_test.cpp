@@ -209,5 +209,21 @@ TEST(ConductorCatalogue, AUserCatalogueIsSearchedFirstAndCheckedRowByRow) {
   }
 }
 
+// Poffenberger–Swart's K = E d p² / (4 (e^(-p xb) - 1 + p xb)) tends to a cantilever's E d / (2 xb²) without tension
+// and to E d p² / (4 (p xb - 1)) once p xb is large.
+TEST(PoffenbergerSwart, StressTendsToItsLimitsOfNoAndHighTension) {
+  const double E = 68000, d = 4.44, xb = kPoffenbergerSwartDistance, ei = 43.06e6;
+  EXPECT_NEAR(poffenberger_swart_stress(1.0, 1e-9, ei, E, d, xb), E * d / (2 * xb * xb), 1e-6 * E * d / (xb * xb));  // p xb = 4e-7
+  const double T = 1e9, p = std::sqrt(T / ei);
+  EXPECT_NEAR(poffenberger_swart_stress(1.0, T, ei, E, d, xb), E * d * p * p / (4 * (p * xb - 1)), 1e-9 * E * d * p * p / (p * xb));
+  EXPECT_NEAR(poffenberger_swart_stress(0.5, 28000, ei, E, d, xb), 0.5 * poffenberger_swart_stress(1.0, 28000, ei, E, d, xb), 1e-12);
+  // Drake at 28 kN by hand: p = 0.025501 /mm, p xb = 2.2696, K = 35.75 MPa/mm.
+  EXPECT_NEAR(poffenberger_swart_stress(1.0, 28000, ei, E, d, xb), 35.75, 0.01);
+  const nlohmann::json report = poffenberger_swart_report(*load_case_text(conductor_case("Drake"), "case.yaml").strand, 28000, 0.5);
+  EXPECT_EQ(report["outer_wire_diameter_mm"], 4.44);
+  EXPECT_EQ(report["outer_wire_E_MPa"], 68000);
+  EXPECT_NEAR(report["stress_amplitude_MPa"].get<double>(), 0.5 * report["K_MPa_per_mm"].get<double>(), 1e-12);
+}
+
 }  // namespace
 }  // namespace strandfem

@@ -94,4 +94,11 @@ double radial_contact_count_helix(const StrandSpec& strand, int layer) {
   return outer.wires * inner.wires * strand.length * std::abs(rate_outer - rate_inner) / (2.0 * M_PI);
 }
 
+double poffenberger_swart_stress(double yb, double tension, double ei_min, double wire_modulus, double wire_diameter, double xb) {
+  const double px = std::sqrt(tension / ei_min) * xb;
+  // e^(-px) - 1 + px loses its digits for small px: its series, (px)²/2 - (px)³/6 + (px)⁴/24, below 1e-3.
+  const double shape = px < 1e-3 ? px * px * (0.5 - px / 6.0 + px * px / 24.0) : std::expm1(-px) + px;
+  return yb * wire_modulus * wire_diameter * px * px / (4.0 * xb * xb * shape);
+}
+
 }  // namespace strandfem

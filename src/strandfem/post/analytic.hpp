@@ -52,4 +52,12 @@ double radial_contact_count_eq24(const StrandSpec& strand, int layer);
 // same lay direction, -1 for opposite.
 double radial_contact_count_helix(const StrandSpec& strand, int layer);
 
+// Poffenberger and Swart (1965), as the EPRI Orange Book writes it: the stress amplitude (MPa) of an outer wire at
+// the last point of contact of a clamp, for a peak-to-peak bending amplitude `yb` (mm) measured `xb` (mm) from that
+// point, of a conductor under `tension` (N) taken as a beam of stiffness `ei_min` (N mm²), the wire of modulus
+// `wire_modulus` (MPa) and diameter `wire_diameter` (mm): sigma_a = K yb, K = E d p² / (4 (e^(-p xb) - 1 + p xb)),
+// p = sqrt(T / EImin). Without tension, K = E d / (2 xb²).
+double poffenberger_swart_stress(double yb, double tension, double ei_min, double wire_modulus, double wire_diameter, double xb);
+constexpr double kPoffenbergerSwartDistance = 89.0;  // mm from the last point of contact (IEEE / CIGRE convention)
+
 }  // namespace strandfem

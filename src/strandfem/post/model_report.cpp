@@ -67,4 +67,22 @@ nlohmann::json model_report(const CaseDefinition& c) {
   return j;
 }
 
+nlohmann::json poffenberger_swart_report(const StrandSpec& strand, double tension, double yb) {
+  const LayerSpec& outer = strand.layers.back();
+  const double modulus = strand.materials.at(outer.material).youngs_modulus;
+  const double ei_min = bending_stiffness_bounds(strand).ei_min;
+  const double xb = kPoffenbergerSwartDistance;
+  const double stress = poffenberger_swart_stress(yb, tension, ei_min, modulus, outer.wire_diameter, xb);
+  return {{"formula", "sigma_a = K yb, K = E d p^2 / (4 (exp(-p xb) - 1 + p xb)), p = sqrt(T / EImin) (Poffenberger and Swart 1965)"},
+          {"tension_N", tension},
+          {"yb_mm", yb},
+          {"xb_mm", xb},
+          {"EI_min_Nm2", ei_min * 1e-6},
+          {"outer_wire_E_MPa", modulus},
+          {"outer_wire_diameter_mm", outer.wire_diameter},
+          {"p_per_mm", std::sqrt(tension / ei_min)},
+          {"K_MPa_per_mm", stress / yb},
+          {"stress_amplitude_MPa", stress}};
+}
+
 }  // namespace strandfem

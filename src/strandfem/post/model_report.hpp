@@ -10,4 +10,8 @@ namespace strandfem {
 // linear axial stiffness (N) for fixed and free ends, metallic area, mass per length, paper comparison.
 nlohmann::json model_report(const CaseDefinition& c);
 
+// A strand's Poffenberger–Swart reference for a tension (N) and a peak-to-peak bending amplitude yb (mm) at 89 mm from
+// the last point of contact: p, K and the outer wires' stress amplitude, with the EImin, E and d they use.
+nlohmann::json poffenberger_swart_report(const StrandSpec& strand, double tension, double yb);
+
 }  // namespace strandfem
