@@ -15,7 +15,11 @@ const NumberRange kFrictionRange = NumberRange::half_open(0, 10);  // Coulomb co
 std::string material_name(const YamlReader& reader, const YAML::Node& node, const std::string& path,
                           const std::map<std::string, Material>& materials) {
   const std::string name = reader.text(node, path);
-  if (!materials.count(name)) reader.fail(node, path, "unknown material '" + name + "' (define it under 'materials')");
+  if (!materials.count(name)) {
+    std::string known;
+    for (const auto& [material, properties] : materials) known += (known.empty() ? "" : ", ") + material;
+    reader.fail(node, path, "unknown material '" + name + "' (the case's: " + known + "; others go under 'materials')");
+  }
   return name;
 }
 // Two material names [a, b] at `node`.
