@@ -27,3 +27,10 @@ def equivalent_bending_stiffness(compliance, tension, span):
     """The EI (N mm^2) for which eq. 3.1 gives the midspan compliance y/V (mm/N) under tension T: a measured
     deflection's secant EI. 0 at the string's compliance L/(4T), infinity at or below zero."""
     return np.vectorize(_core.equivalent_bending_stiffness)(compliance, tension, span)[()]
+
+
+def poffenberger_swart_stress(yb, tension, ei_min, wire_modulus, wire_diameter, xb=89.0):
+    """Poffenberger and Swart (1965): the stress amplitude (MPa) of an outer wire (modulus E in MPa, diameter d in
+    mm) for a peak-to-peak bending amplitude yb (mm) at xb mm from a clamp's last point of contact, the conductor a
+    beam of EImin (N mm^2) under the tension T (N): yb E d p^2 / (4 (exp(-p xb) - 1 + p xb)), p = sqrt(T/EImin)."""
+    return np.vectorize(_core.poffenberger_swart_stress)(yb, tension, ei_min, wire_modulus, wire_diameter, xb)[()]

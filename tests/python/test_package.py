@@ -143,6 +143,20 @@ class PythonPackage(unittest.TestCase):
         self.assertGreater(refs["ei_max_Nm2"], refs["ei_min_Nm2"])
         self.assertGreaterEqual(refs["axial_stiffness_fixed_N"], refs["axial_stiffness_free_N"])
 
+    def test_conductors_are_the_programs_and_a_named_conductor_builds(self):
+        table = strandfem.conductors()
+        listed = subprocess.run([PROGRAM, "conductors"], capture_output=True, text=True, check=True).stdout.splitlines()
+        self.assertEqual(len(table), len(listed) - 1)
+        drake = table[table["conductor"] == "Drake"].iloc[0]
+        self.assertEqual(drake["wires"], 33)
+        self.assertIn(f"{drake['EI_max_Nm2']:.1f}", next(line for line in listed if line.startswith("Drake ")))
+        case = strandfem.Case.from_dict({"title": "t", "strand": {"conductor": "drake", "length": 300},
+                                         "steps": [{"name": "pull", "increments": 1, "axial_force": 1000}]})
+        self.assertAlmostEqual(case.info()["EI_max_Nm2"], drake["EI_max_Nm2"], places=1)
+        # Poffenberger-Swart without tension: a cantilever's E d / (2 xb^2) per mm of yb.
+        self.assertTrue(math.isclose(strandfem.references.poffenberger_swart_stress(1.0, 1e-9, 4.3e7, 68000, 4.44),
+                                     68000 * 4.44 / (2 * 89.0**2), rel_tol=1e-6))
+
     def test_sweep_of_a_product_of_keys_and_of_a_list_of_cases(self):
         grid = strandfem.product({"contact.friction": [0.1, 0.3], "strand.length": [60, 80]})
         self.assertEqual(grid, [{"contact.friction": 0.1, "strand.length": 60}, {"contact.friction": 0.1, "strand.length": 80},
