@@ -202,12 +202,7 @@ int run_sweep_command(const strandfem::SweepDefinition& sweep, int threads, bool
 
 // strandfem conductors: a table of the catalogue (a user's file first), one conductor per row.
 int list_conductors(const std::string& catalogue) {
-  std::vector<strandfem::CatalogueConductor> conductors;
-  if (!catalogue.empty()) conductors = strandfem::read_conductor_catalogue_file(catalogue);
-  const auto& shipped = strandfem::shipped_conductor_catalogue();
-  conductors.insert(conductors.end(), shipped.begin(), shipped.end());
-  std::vector<std::vector<std::string>> rows = {strandfem::conductor_summary_header()};
-  for (const auto& c : conductors) rows.push_back(strandfem::conductor_summary_row(c));
+  const std::vector<std::vector<std::string>> rows = strandfem::conductor_summary_table(catalogue);
   std::vector<std::size_t> widths(rows.front().size(), 0);
   for (const auto& row : rows)
     for (std::size_t i = 0; i < row.size(); ++i) widths[i] = std::max(widths[i], row[i].size());

@@ -115,17 +115,7 @@ PYBIND11_MODULE(_core, m) {
           return CaseHandle([text, name] { return strandfem::load_case_text(text, name); });
         },
         py::arg("text"), py::arg("name"));
-  m.def("conductor_table",
-        [](const std::string& catalogue) {
-          std::vector<strandfem::CatalogueConductor> conductors;
-          if (!catalogue.empty()) conductors = strandfem::read_conductor_catalogue_file(catalogue);
-          const auto& shipped = strandfem::shipped_conductor_catalogue();
-          conductors.insert(conductors.end(), shipped.begin(), shipped.end());
-          std::vector<std::vector<std::string>> rows = {strandfem::conductor_summary_header()};
-          for (const auto& c : conductors) rows.push_back(strandfem::conductor_summary_row(c));
-          return rows;
-        },
-        py::arg("catalogue") = "");
+  m.def("conductor_table", &strandfem::conductor_summary_table, py::arg("catalogue") = "");
   m.def("poffenberger_swart_stress", &strandfem::poffenberger_swart_stress, py::arg("yb"), py::arg("tension"), py::arg("ei_min"),
         py::arg("wire_modulus"), py::arg("wire_diameter"), py::arg("xb"));
   m.def("set_case_key", &strandfem::set_case_key, py::arg("case_text"), py::arg("key_path"), py::arg("value"));

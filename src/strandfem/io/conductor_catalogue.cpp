@@ -238,4 +238,14 @@ std::vector<std::string> conductor_summary_row(const CatalogueConductor& c) {
           fmt::format("{:.3f}", p.mass_per_length), fmt::format("{:.1f}", ei.ei_max * 1e-6), fmt::format("{:.2f}", ei.ei_min * 1e-6)};
 }
 
+std::vector<std::vector<std::string>> conductor_summary_table(const std::string& catalogue) {
+  std::vector<CatalogueConductor> conductors;
+  if (!catalogue.empty()) conductors = read_conductor_catalogue_file(catalogue);
+  const auto& shipped = shipped_conductor_catalogue();
+  conductors.insert(conductors.end(), shipped.begin(), shipped.end());
+  std::vector<std::vector<std::string>> rows = {conductor_summary_header()};
+  for (const CatalogueConductor& c : conductors) rows.push_back(conductor_summary_row(c));
+  return rows;
+}
+
 }  // namespace strandfem

@@ -55,5 +55,7 @@ ConductorStrand conductor_strand(const CatalogueConductor& c, const std::vector<
 // per length (kg/m), EImax and EImin (N m²), on the catalogue's lay angles.
 std::vector<std::string> conductor_summary_header();
 std::vector<std::string> conductor_summary_row(const CatalogueConductor& c);
+// The header, then a row per conductor: those of the file `catalogue` (when not empty), then the shipped ones.
+std::vector<std::vector<std::string>> conductor_summary_table(const std::string& catalogue);
 
 }  // namespace strandfem
